@@ -1,0 +1,26 @@
+#ifndef PTM_VEC3_H
+#define PTM_VEC3_H
+// Small fixed-size 3D vector arithmetic shared by the geometry core.
+#include <array>
+#include <cmath>
+
+namespace ptm
+{
+using Vec3 = std::array<double, 3>;
+
+inline Vec3 operator+(const Vec3& a, const Vec3& b) { return { a[0] + b[0], a[1] + b[1], a[2] + b[2] }; }
+inline Vec3 operator-(const Vec3& a, const Vec3& b) { return { a[0] - b[0], a[1] - b[1], a[2] - b[2] }; }
+inline Vec3 operator*(double s, const Vec3& a) { return { s * a[0], s * a[1], s * a[2] }; }
+inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline Vec3 cross(const Vec3& a, const Vec3& b)
+{
+  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+}
+inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+inline Vec3 normalized(const Vec3& a)
+{
+  const double n = norm(a);
+  return n > 0 ? (1.0 / n) * a : a;
+}
+} // namespace ptm
+#endif
