@@ -1,0 +1,64 @@
+#ifndef PTM_HALF_SPACE_MEASURE_H
+#define PTM_HALF_SPACE_MEASURE_H
+// How much of one part of a surface complex lies below a plane, for placing
+// cutting planes so that parts get equal shares.
+//
+// Volume: by the divergence theorem with the field F(x) = n (n.x - c), whose
+// divergence is 1 and which vanishes on the plane n.x = c, so the unknown cap
+// of the cut contributes nothing: the volume below is the flux of F through
+// the part's boundary faces clipped to the half-space below. Interface
+// regions (polygons with holes) are integrated through their boundary edges
+// with Green's theorem, using an in-plane field that vanishes on the cut too.
+// Nodes / BoundaryFacets: counts of surface points / surface triangles
+// (by centroid) below.
+#include "SurfaceComplex.h"
+
+#include <string>
+#include <vector>
+
+namespace ptm
+{
+enum class BalanceCriterion
+{
+  Volume,
+  BoundaryFacets,
+  Nodes
+};
+
+class HalfSpaceMeasure
+{
+public:
+  HalfSpaceMeasure(const SurfaceComplex& complex, int cell, const Vec3& normal,
+    BalanceCriterion criterion);
+
+  // Measure of the part below n.x = offset.
+  double below(double offset) const;
+  // Measure of the whole part.
+  double total() const { return this->Total; }
+  // Range of n.x over the part's points.
+  double minimumOffset() const { return this->MinOffset; }
+  double maximumOffset() const { return this->MaxOffset; }
+
+  // The offset where the part below holds `fraction` of the total: a root of
+  // below(c) - fraction * total(), to `relativeTolerance` of the total, found
+  // by bracketing regula falsi (Illinois). Counts are step functions: the
+  // offset is put half way between the two neighbouring points or centroids.
+  double offsetForFraction(double fraction, double relativeTolerance) const;
+
+private:
+  const SurfaceComplex& Complex;
+  int Cell;
+  Vec3 Normal;
+  BalanceCriterion Criterion;
+  std::vector<std::size_t> Triangles;
+  std::vector<std::pair<std::size_t, double>> Regions; // region, +1 or -1 (outward sign)
+  std::vector<double> SortedValues;                    // projections, for the count criteria
+  double Total = 0;
+  double MinOffset = 0;
+  double MaxOffset = 0;
+};
+
+// Every point of the part (surface and interface boundary points), sorted.
+std::vector<Index> cellPoints(const SurfaceComplex& complex, int cell);
+} // namespace ptm
+#endif

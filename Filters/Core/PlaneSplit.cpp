@@ -1,0 +1,549 @@
+#include "PlaneSplit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <unordered_map>
+
+namespace ptm
+{
+namespace
+{
+struct VertexSide
+{
+  double distance = 0;
+  double shortestEdge = std::numeric_limits<double>::infinity();
+  double edgeLengthSum = 0;
+  int regionEdgeCount = 0;
+  int side = 0; // -1 below, 0 on the plane, +1 above
+};
+
+struct PairHash
+{
+  std::size_t operator()(const std::pair<Index, Index>& p) const
+  {
+    return std::hash<Index>()(p.first) * 1000003u ^ std::hash<Index>()(p.second);
+  }
+};
+
+// In-plane orthonormal basis from a unit normal, deterministic.
+void planeBasis(const Vec3& n, Vec3& e1, Vec3& e2)
+{
+  const int axis = std::fabs(n[0]) <= std::fabs(n[1])
+    ? (std::fabs(n[0]) <= std::fabs(n[2]) ? 0 : 2)
+    : (std::fabs(n[1]) <= std::fabs(n[2]) ? 1 : 2);
+  Vec3 a{ 0, 0, 0 };
+  a[axis] = 1;
+  e1 = normalized(cross(n, a));
+  e2 = cross(n, e1);
+}
+
+// Winding number of directed edges (region to the left) around q, in the plane basis.
+int windingNumber2D(const std::vector<Vec3>& points, const std::vector<DirectedEdge>& edges,
+  const Vec3& e1, const Vec3& e2, const Vec3& q)
+{
+  const double qx = dot(q, e1), qy = dot(q, e2);
+  int w = 0;
+  for (const auto& e : edges)
+  {
+    const double ax = dot(points[e[0]], e1), ay = dot(points[e[0]], e2);
+    const double bx = dot(points[e[1]], e1), by = dot(points[e[1]], e2);
+    const double isLeft = (bx - ax) * (qy - ay) - (qx - ax) * (by - ay);
+    if (ay <= qy)
+    {
+      if (by > qy && isLeft > 0)
+      {
+        ++w;
+      }
+    }
+    else if (by <= qy && isLeft < 0)
+    {
+      --w;
+    }
+  }
+  return w;
+}
+
+// Inserts the points of split edges into every face of other parts (not
+// labeled `below` or `above`, the two halves of the part just cut) that has
+// such an edge: triangles are split in two (repeatedly, if several of their
+// edges were split), region boundary edges in two.
+void insertEdgePoints(SurfaceComplex& c, int below, int above,
+  const std::unordered_map<std::pair<Index, Index>, Index, PairHash>& crossings)
+{
+  if (crossings.empty())
+  {
+    return;
+  }
+  auto ours = [&](const SubdomainPair& pair) {
+    return pair[0] == below || pair[0] == above || pair[1] == below || pair[1] == above;
+  };
+  auto pointOn = [&](Index a, Index b) -> Index {
+    auto it = crossings.find({ std::min(a, b), std::max(a, b) });
+    return it == crossings.end() ? -1 : it->second;
+  };
+  const std::size_t triangleCount = c.triangles.size();
+  std::vector<std::size_t> pending;
+  for (std::size_t i = 0; i < triangleCount; ++i)
+  {
+    if (!ours(c.trianglePairs[i]))
+    {
+      pending.push_back(i);
+    }
+  }
+  while (!pending.empty())
+  {
+    const std::size_t i = pending.back();
+    pending.pop_back();
+    const Triangle t = c.triangles[i];
+    for (int k = 0; k < 3; ++k)
+    {
+      const Index a = t[k], b = t[(k + 1) % 3], w = t[(k + 2) % 3];
+      const Index p = pointOn(a, b);
+      if (p < 0)
+      {
+        continue;
+      }
+      c.triangles[i] = { a, p, w };
+      c.triangles.push_back({ p, b, w });
+      c.trianglePairs.push_back(c.trianglePairs[i]);
+      c.sourceFaces.push_back(c.sourceFaces[i]);
+      pending.push_back(i);
+      pending.push_back(c.triangles.size() - 1);
+      break;
+    }
+  }
+  for (auto& region : c.interfaces)
+  {
+    if (ours(region.pair))
+    {
+      continue;
+    }
+    std::vector<DirectedEdge> edges;
+    for (const auto& e : region.edges)
+    {
+      const Index p = pointOn(e[0], e[1]);
+      if (p < 0)
+      {
+        edges.push_back(e);
+      }
+      else
+      {
+        edges.push_back({ e[0], p });
+        edges.push_back({ p, e[1] });
+      }
+    }
+    region.edges.swap(edges);
+  }
+}
+} // namespace
+
+bool splitCell(SurfaceComplex& c, int cell, const Vec3& n, double offset, int planeId, int below,
+  int above, const PlaneSplitOptions& options, PlaneSplitStats& stats, std::string& error)
+{
+  // 1. The faces of the part.
+  std::vector<std::size_t> triangles;
+  for (std::size_t i = 0; i < c.triangles.size(); ++i)
+  {
+    if (c.trianglePairs[i][0] == cell && c.trianglePairs[i][1] == -1)
+    {
+      triangles.push_back(i);
+    }
+  }
+  std::vector<std::size_t> regions;
+  for (std::size_t r = 0; r < c.interfaces.size(); ++r)
+  {
+    if (c.interfaces[r].pair[0] == cell || c.interfaces[r].pair[1] == cell)
+    {
+      regions.push_back(r);
+    }
+  }
+
+  // 2. Vertex sides, with snapping of vertices very near the plane.
+  std::unordered_map<Index, VertexSide> vertices;
+  auto touchEdge = [&](Index a, Index b, bool regionEdge) {
+    const double length = norm(c.points[a] - c.points[b]);
+    for (Index v : { a, b })
+    {
+      VertexSide& info = vertices[v];
+      info.shortestEdge = std::min(info.shortestEdge, length);
+      if (regionEdge)
+      {
+        info.edgeLengthSum += length;
+        ++info.regionEdgeCount;
+      }
+    }
+  };
+  for (std::size_t i : triangles)
+  {
+    const auto& t = c.triangles[i];
+    for (int k = 0; k < 3; ++k)
+    {
+      touchEdge(t[k], t[(k + 1) % 3], false);
+    }
+  }
+  for (std::size_t r : regions)
+  {
+    for (const auto& e : c.interfaces[r].edges)
+    {
+      touchEdge(e[0], e[1], true);
+    }
+  }
+  for (auto& [v, info] : vertices)
+  {
+    info.distance = dot(n, c.points[v]) - offset;
+    if (info.distance == 0.0)
+    {
+      info.side = 0;
+    }
+    else if (std::fabs(info.distance) <= options.snapFraction * info.shortestEdge)
+    {
+      info.side = 0;
+      ++stats.snappedPoints;
+    }
+    else
+    {
+      info.side = info.distance < 0 ? -1 : 1;
+    }
+  }
+  auto sideOf = [&](Index v) { return vertices.at(v).side; };
+
+  // Points on the plane (on-plane vertices, crossings, chord points) bound the new interface.
+  std::unordered_map<Index, char> onPlane;
+  for (const auto& [v, info] : vertices)
+  {
+    if (info.side == 0)
+    {
+      onPlane[v] = 1;
+    }
+  }
+
+  std::unordered_map<std::pair<Index, Index>, Index, PairHash> crossings;
+  std::unordered_map<Index, double> splitEdgeLength; // crossing point -> length of its edge
+  auto crossing = [&](Index a, Index b) {
+    const Index lo = std::min(a, b), hi = std::max(a, b);
+    auto it = crossings.find({ lo, hi });
+    if (it != crossings.end())
+    {
+      return it->second;
+    }
+    const double dlo = vertices.at(lo).distance, dhi = vertices.at(hi).distance;
+    const double t = dlo / (dlo - dhi);
+    c.points.push_back(c.points[lo] + t * (c.points[hi] - c.points[lo]));
+    const Index id = static_cast<Index>(c.points.size() - 1);
+    crossings[{ lo, hi }] = id;
+    splitEdgeLength[id] = norm(c.points[hi] - c.points[lo]);
+    onPlane[id] = 1;
+    return id;
+  };
+
+  // 3. Surface triangles.
+  auto addTriangle = [&](const Triangle& t, int label, Index source, std::size_t replace,
+                       bool& replaced) {
+    if (!replaced)
+    {
+      c.triangles[replace] = t;
+      c.trianglePairs[replace] = { label, -1 };
+      c.sourceFaces[replace] = source;
+      replaced = true;
+    }
+    else
+    {
+      c.triangles.push_back(t);
+      c.trianglePairs.push_back({ label, -1 });
+      c.sourceFaces.push_back(source);
+    }
+  };
+  auto addPolygon = [&](const std::vector<Index>& poly, int label, Index source,
+                      std::size_t replace, bool& replaced) {
+    if (poly.size() == 3)
+    {
+      addTriangle({ poly[0], poly[1], poly[2] }, label, source, replace, replaced);
+    }
+    else if (poly.size() == 4)
+    {
+      const double d02 = norm(c.points[poly[0]] - c.points[poly[2]]);
+      const double d13 = norm(c.points[poly[1]] - c.points[poly[3]]);
+      if (d02 <= d13)
+      {
+        addTriangle({ poly[0], poly[1], poly[2] }, label, source, replace, replaced);
+        addTriangle({ poly[0], poly[2], poly[3] }, label, source, replace, replaced);
+      }
+      else
+      {
+        addTriangle({ poly[1], poly[2], poly[3] }, label, source, replace, replaced);
+        addTriangle({ poly[1], poly[3], poly[0] }, label, source, replace, replaced);
+      }
+    }
+  };
+  for (std::size_t i : triangles)
+  {
+    const Triangle t = c.triangles[i];
+    const int s0 = sideOf(t[0]), s1 = sideOf(t[1]), s2 = sideOf(t[2]);
+    const bool anyBelow = s0 < 0 || s1 < 0 || s2 < 0;
+    const bool anyAbove = s0 > 0 || s1 > 0 || s2 > 0;
+    if (!anyBelow && !anyAbove)
+    {
+      // lying in the plane: it bounds the material on the side its normal points away from
+      const Vec3 normal =
+        cross(c.points[t[1]] - c.points[t[0]], c.points[t[2]] - c.points[t[0]]);
+      c.trianglePairs[i] = { dot(normal, n) > 0 ? below : above, -1 };
+      continue;
+    }
+    if (!anyBelow || !anyAbove)
+    {
+      c.trianglePairs[i] = { anyBelow ? below : above, -1 };
+      continue;
+    }
+    ++stats.splitTriangles;
+    std::vector<Index> lower, upper;
+    for (int k = 0; k < 3; ++k)
+    {
+      const Index a = t[k], b = t[(k + 1) % 3];
+      const int sa = sideOf(a), sb = sideOf(b);
+      if (sa <= 0)
+      {
+        lower.push_back(a);
+      }
+      if (sa >= 0)
+      {
+        upper.push_back(a);
+      }
+      if (sa * sb < 0)
+      {
+        const Index p = crossing(a, b);
+        lower.push_back(p);
+        upper.push_back(p);
+      }
+    }
+    const Index source = c.sourceFaces[i];
+    bool replaced = false;
+    addPolygon(lower, below, source, i, replaced);
+    addPolygon(upper, above, source, i, replaced);
+  }
+
+  // 4. Interface regions of earlier planes.
+  std::vector<InterfaceRegion> newRegions;
+  for (std::size_t r : regions)
+  {
+    InterfaceRegion& region = c.interfaces[r];
+    const Vec3 regionNormal = c.planes[region.planeId].normal;
+    std::vector<DirectedEdge> lowerEdges, upperEdges;
+    std::vector<Index> onLine; // boundary points of this region on the cutting line
+    const std::vector<DirectedEdge> original = region.edges;
+    std::vector<DirectedEdge> inLine; // boundary edges lying along the line
+    for (const auto& e : original)
+    {
+      const int sa = sideOf(e[0]), sb = sideOf(e[1]);
+      if (sa * sb < 0)
+      {
+        const Index p = crossing(e[0], e[1]);
+        onLine.push_back(p);
+        (sa < 0 ? lowerEdges : upperEdges).push_back({ e[0], p });
+        (sb < 0 ? lowerEdges : upperEdges).push_back({ p, e[1] });
+        continue;
+      }
+      if (sa == 0)
+      {
+        onLine.push_back(e[0]);
+      }
+      if (sb == 0)
+      {
+        onLine.push_back(e[1]);
+      }
+      if (sa == 0 && sb == 0)
+      {
+        const Vec3 left = cross(regionNormal, c.points[e[1]] - c.points[e[0]]);
+        (dot(left, n) > 0 ? upperEdges : lowerEdges).push_back(e);
+        inLine.push_back(e);
+      }
+      else
+      {
+        (sa + sb > 0 ? upperEdges : lowerEdges).push_back(e);
+      }
+    }
+    const Vec3 lineDirection = cross(regionNormal, n);
+    if (!upperEdges.empty() && !lowerEdges.empty() && norm(lineDirection) > 1e-12)
+    {
+      // chords: intervals of the cutting line inside the region
+      std::sort(onLine.begin(), onLine.end());
+      onLine.erase(std::unique(onLine.begin(), onLine.end()), onLine.end());
+      std::sort(onLine.begin(), onLine.end(), [&](Index a, Index b) {
+        const double ta = dot(c.points[a], lineDirection), tb = dot(c.points[b], lineDirection);
+        return ta < tb || (ta == tb && a < b);
+      });
+      Vec3 e1, e2;
+      planeBasis(regionNormal, e1, e2);
+      auto localSpacing = [&](Index v) {
+        auto it = vertices.find(v);
+        if (it != vertices.end() && it->second.regionEdgeCount > 0)
+        {
+          return it->second.edgeLengthSum / it->second.regionEdgeCount;
+        }
+        // a crossing point: the length of the edge it split
+        auto split = splitEdgeLength.find(v);
+        return split != splitEdgeLength.end() ? split->second : 0.0;
+      };
+      for (std::size_t k = 0; k + 1 < onLine.size(); ++k)
+      {
+        const Index a = onLine[k], b = onLine[k + 1];
+        bool boundary = false;
+        for (const auto& e : inLine)
+        {
+          boundary = boundary || (e[0] == a && e[1] == b) || (e[0] == b && e[1] == a);
+        }
+        if (boundary)
+        {
+          continue;
+        }
+        const Vec3 middle = 0.5 * (c.points[a] + c.points[b]);
+        if (windingNumber2D(c.points, original, e1, e2, middle) <= 0)
+        {
+          continue;
+        }
+        const double length = norm(c.points[b] - c.points[a]);
+        const double spacing = 0.5 * (localSpacing(a) + localSpacing(b));
+        const int segments =
+          spacing > 0 ? std::max(1, static_cast<int>(std::lround(length / spacing))) : 1;
+        std::vector<Index> chain{ a };
+        for (int j = 1; j < segments; ++j)
+        {
+          const double t = static_cast<double>(j) / segments;
+          c.points.push_back(c.points[a] + t * (c.points[b] - c.points[a]));
+          const Index id = static_cast<Index>(c.points.size() - 1);
+          onPlane[id] = 1;
+          chain.push_back(id);
+          ++stats.chordPoints;
+        }
+        chain.push_back(b);
+        // the lower piece has the region on the left of its chord edges
+        const bool forwardForLower = dot(cross(regionNormal, c.points[b] - c.points[a]), n) < 0;
+        for (std::size_t j = 0; j + 1 < chain.size(); ++j)
+        {
+          const DirectedEdge forward{ chain[j], chain[j + 1] };
+          const DirectedEdge backward{ chain[j + 1], chain[j] };
+          lowerEdges.push_back(forwardForLower ? forward : backward);
+          upperEdges.push_back(forwardForLower ? backward : forward);
+        }
+      }
+    }
+    else if (!upperEdges.empty() && !lowerEdges.empty())
+    {
+      error = "a cutting plane lies too close to a parallel interface";
+      return false;
+    }
+    auto relabel = [&](SubdomainPair pair, int to) {
+      for (int& p : pair)
+      {
+        if (p == cell)
+        {
+          p = to;
+        }
+      }
+      return pair;
+    };
+    const SubdomainPair pair = region.pair;
+    const int planeOfRegion = region.planeId;
+    bool replaced = false;
+    for (int pieceSide : { -1, 1 })
+    {
+      std::vector<DirectedEdge>& edges = pieceSide < 0 ? lowerEdges : upperEdges;
+      if (edges.empty())
+      {
+        continue;
+      }
+      InterfaceRegion piece;
+      piece.planeId = planeOfRegion;
+      piece.pair = relabel(pair, pieceSide < 0 ? below : above);
+      piece.edges = std::move(edges);
+      if (!replaced)
+      {
+        c.interfaces[r] = std::move(piece);
+        replaced = true;
+      }
+      else
+      {
+        newRegions.push_back(std::move(piece));
+      }
+    }
+  }
+  for (auto& region : newRegions)
+  {
+    c.interfaces.push_back(std::move(region));
+  }
+
+  // 5. Faces of other parts that share a split edge (along the boundary of an
+  // earlier interface) get the same point, so no T-junction is left.
+  insertEdgePoints(c, below, above, crossings);
+
+  // 6. The new interface: the edges left open by the faces of `below`.
+  std::map<DirectedEdge, int> open;
+  auto addEdge = [&](Index a, Index b) {
+    auto it = open.find({ b, a });
+    if (it != open.end())
+    {
+      if (--it->second == 0)
+      {
+        open.erase(it);
+      }
+    }
+    else
+    {
+      ++open[{ a, b }];
+    }
+  };
+  for (std::size_t i = 0; i < c.triangles.size(); ++i)
+  {
+    if (c.trianglePairs[i][0] == below && c.trianglePairs[i][1] == -1)
+    {
+      const auto& t = c.triangles[i];
+      addEdge(t[0], t[1]);
+      addEdge(t[1], t[2]);
+      addEdge(t[2], t[0]);
+    }
+  }
+  for (const auto& region : c.interfaces)
+  {
+    if (region.pair[0] == below)
+    {
+      for (const auto& e : region.edges)
+      {
+        addEdge(e[0], e[1]);
+      }
+    }
+    else if (region.pair[1] == below)
+    {
+      for (const auto& e : region.edges)
+      {
+        addEdge(e[1], e[0]);
+      }
+    }
+  }
+  InterfaceRegion cut;
+  cut.planeId = planeId;
+  cut.pair = { below, above };
+  for (const auto& [edge, count] : open)
+  {
+    if (count != 1 || !onPlane.count(edge[0]) || !onPlane.count(edge[1]))
+    {
+      std::ostringstream msg;
+      msg << "cutting plane " << planeId << " left the part's surface open at points " << edge[0]
+          << " and " << edge[1] << " (the input surface is probably not closed or self-intersects)";
+      error = msg.str();
+      return false;
+    }
+    cut.edges.push_back({ edge[1], edge[0] });
+  }
+  if (cut.edges.empty())
+  {
+    std::ostringstream msg;
+    msg << "cutting plane " << planeId << " does not cut the part it was placed in";
+    error = msg.str();
+    return false;
+  }
+  c.interfaces.push_back(std::move(cut));
+  return true;
+}
+} // namespace ptm

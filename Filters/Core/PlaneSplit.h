@@ -1,0 +1,48 @@
+#ifndef PTM_PLANE_SPLIT_H
+#define PTM_PLANE_SPLIT_H
+// Splitting one part of a labeled surface complex by one plane.
+//
+// During decomposition the labels of the complex are part ("cell") ids. The
+// part `cell` is bounded by surface triangles labeled {cell, -1} and by
+// interface regions whose pair contains `cell`. splitCell cuts exactly these
+// faces (no other part is touched) by the plane normal . x = offset:
+//  * every vertex gets a side: below, above, or on the plane. A vertex within
+//    snapFraction x (its shortest incident edge) of the plane counts as on
+//    it, so the contour runs through it instead of leaving a sliver;
+//  * an edge whose ends are strictly on opposite sides is split at one new
+//    point, computed once from the edge's ends, so every face sharing the
+//    edge shares the point;
+//  * surface triangles crossing the plane are split into triangles (a quad
+//    piece along its shorter diagonal); triangles lying in the plane go to
+//    the side their normal points away from (the material side);
+//  * interface regions of earlier planes are split along the line where
+//    their plane meets this one; the chords inside a region get new points
+//    at about the local boundary spacing, shared by the region pieces and
+//    the new interface;
+//  * the new interface region (pair {below, above}, normal = plane normal) is
+//    bounded by the edges left open by the faces now labeled `below`.
+#include "SurfaceComplex.h"
+
+#include <string>
+
+namespace ptm
+{
+struct PlaneSplitOptions
+{
+  double snapFraction = 0.1;
+};
+
+struct PlaneSplitStats
+{
+  std::size_t splitTriangles = 0;
+  std::size_t snappedPoints = 0; // vertices off the plane treated as on it
+  std::size_t chordPoints = 0;   // new points on lines where two planes meet
+};
+
+// Returns false with a message if the part's faces do not form a closed
+// surface or the plane does not produce a consistent interface.
+bool splitCell(SurfaceComplex& complex, int cell, const Vec3& normal, double offset, int planeId,
+  int below, int above, const PlaneSplitOptions& options, PlaneSplitStats& stats,
+  std::string& error);
+} // namespace ptm
+#endif

@@ -1,0 +1,358 @@
+#include "VolumeBalancedDecomposition.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <sstream>
+
+namespace ptm
+{
+const char* toString(CutStrategy s)
+{
+  return s == CutStrategy::ParallelPlanes ? "ParallelPlanes" : "RecursiveBisection";
+}
+
+const char* toString(CutDirection d)
+{
+  switch (d)
+  {
+    case CutDirection::X: return "X";
+    case CutDirection::Y: return "Y";
+    case CutDirection::Z: return "Z";
+    case CutDirection::LongestExtent: return "LongestExtent";
+    case CutDirection::Inertia: return "Inertia";
+  }
+  return "?";
+}
+
+const char* toString(BalanceCriterion c)
+{
+  switch (c)
+  {
+    case BalanceCriterion::Volume: return "Volume";
+    case BalanceCriterion::BoundaryFacets: return "BoundaryFacets";
+    case BalanceCriterion::Nodes: return "Nodes";
+  }
+  return "?";
+}
+
+namespace
+{
+// Measure of each final subdomain by the criterion.
+std::vector<double> measureSubdomains(const SurfaceComplex& c, BalanceCriterion criterion,
+  const std::vector<double>& volumes)
+{
+  if (criterion == BalanceCriterion::Volume)
+  {
+    return volumes;
+  }
+  std::vector<double> m(c.subdomainCount, 0.0);
+  if (criterion == BalanceCriterion::BoundaryFacets)
+  {
+    for (std::size_t i = 0; i < c.triangles.size(); ++i)
+    {
+      if (c.trianglePairs[i][1] == -1)
+      {
+        m[c.trianglePairs[i][0]] += 1;
+      }
+    }
+    return m;
+  }
+  std::vector<std::vector<Index>> nodes(c.subdomainCount);
+  for (std::size_t i = 0; i < c.triangles.size(); ++i)
+  {
+    if (c.trianglePairs[i][1] == -1)
+    {
+      auto& list = nodes[c.trianglePairs[i][0]];
+      list.insert(list.end(), c.triangles[i].begin(), c.triangles[i].end());
+    }
+  }
+  for (int s = 0; s < c.subdomainCount; ++s)
+  {
+    std::sort(nodes[s].begin(), nodes[s].end());
+    m[s] = static_cast<double>(std::unique(nodes[s].begin(), nodes[s].end()) - nodes[s].begin());
+  }
+  return m;
+}
+} // namespace
+
+DecompositionResult decomposeVolumeBalanced(
+  const TriangleSurface& input, const DecompositionOptions& options)
+{
+  DecompositionResult result;
+  const int K = options.numberOfSubdomains;
+  if (K < 1)
+  {
+    result.error = "the number of subdomains must be at least 1";
+    return result;
+  }
+  if (!(options.balanceTolerance > 0 && options.balanceTolerance < 1))
+  {
+    result.error = "the balance tolerance must lie strictly between 0 and 1";
+    return result;
+  }
+  if (!(options.snapFraction >= 0 && options.snapFraction < 0.5))
+  {
+    result.error = "the snap fraction must lie in [0, 0.5)";
+    return result;
+  }
+  if (input.triangles.empty() || input.points.size() < 4)
+  {
+    result.error = "the input surface is empty or has fewer than 4 points";
+    return result;
+  }
+  for (const auto& p : input.points)
+  {
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      result.error = "the input surface has a point with a NaN or infinite coordinate";
+      return result;
+    }
+  }
+  for (const auto& t : input.triangles)
+  {
+    for (Index v : t)
+    {
+      if (v < 0 || v >= static_cast<Index>(input.points.size()))
+      {
+        result.error = "a triangle refers to a point that does not exist";
+        return result;
+      }
+    }
+  }
+
+  TriangleSurface surface = input;
+  std::vector<Index> source;
+  std::size_t dropped = 0;
+  result.orientation.mergedPoints = mergeDuplicatePoints(surface, dropped, source);
+  OrientationResult oriented = orientShells(surface);
+  if (!oriented.ok)
+  {
+    result.error = oriented.error;
+    return result;
+  }
+  result.orientation = oriented.report;
+  result.orientation.droppedTriangles = dropped;
+  if (dropped > 0)
+  {
+    std::ostringstream msg;
+    msg << dropped << " degenerate triangles (repeating a corner) were removed";
+    result.warnings.push_back(msg.str());
+  }
+  if (result.orientation.reorientedTriangles > 0 || result.orientation.invertedShells > 0)
+  {
+    std::ostringstream msg;
+    msg << "orientation repaired: " << result.orientation.reorientedTriangles
+        << " triangles flipped to agree with their neighbours, "
+        << result.orientation.invertedShells << " inside-out shells inverted";
+    result.warnings.push_back(msg.str());
+  }
+  double totalVolume = 0;
+  for (std::size_t k = 0; k < result.orientation.shellVolume.size(); ++k)
+  {
+    totalVolume += result.orientation.shellVolume[k];
+  }
+  result.totalVolume = totalVolume;
+  if (!(totalVolume > 0))
+  {
+    result.error = "the surface encloses no volume";
+    return result;
+  }
+
+  SurfaceComplex& c = result.complex;
+  c.points = surface.points;
+  c.triangles = surface.triangles;
+  c.trianglePairs.assign(c.triangles.size(), SubdomainPair{ 0, -1 });
+  c.sourceFaces = source;
+
+  const double solveTolerance = std::min(1e-6, 0.01 * options.balanceTolerance);
+  int nextCell = 1;
+  std::vector<int> leaves; // cell ids in subdomain order
+  std::string error;
+
+  // Cuts `cell` so that the part below holds `fraction` of its measure. The
+  // offset from the measure function is only a start: snapping vertices onto
+  // the plane moves volume, so the split is tried on a copy, measured, and the
+  // offset corrected (Newton with the cross-section area) until the part
+  // below is within a quarter of the tolerance of one subdomain; if snapping
+  // makes that impossible, it is reduced step by step.
+  auto cut = [&](int cell, const Vec3& normal, double fraction, int parts, int& below,
+               int& above) -> bool {
+    const HalfSpaceMeasure measure(c, cell, normal, options.criterion);
+    double offset = measure.offsetForFraction(fraction, solveTolerance);
+    if (!(offset > measure.minimumOffset() && offset < measure.maximumOffset()))
+    {
+      error = "the subdomains are too many for this surface: a part cannot be cut further";
+      return false;
+    }
+    const int planeId = static_cast<int>(c.planes.size());
+    const std::vector<Index> points = cellPoints(c, cell);
+    Vec3 centroid{ 0, 0, 0 };
+    for (Index p : points)
+    {
+      centroid = centroid + c.points[p];
+    }
+    centroid = (1.0 / std::max<double>(1.0, static_cast<double>(points.size()))) * centroid;
+    below = nextCell++;
+    above = nextCell++;
+    const bool volumeCriterion = options.criterion == BalanceCriterion::Volume;
+    const double cellVolume = volumeCriterion ? labelVolume(c, cell) : 0.0;
+    const double target = fraction * cellVolume;
+    const double allowed = 0.25 * options.balanceTolerance * cellVolume / parts;
+
+    SurfaceComplex best;
+    PlaneSplitStats bestStats;
+    double bestError = std::numeric_limits<double>::infinity();
+    std::string lastError;
+    for (double snap = options.snapFraction;; snap = snap > 0.01 ? 0.5 * snap : 0.0)
+    {
+      PlaneSplitOptions splitOptions;
+      splitOptions.snapFraction = snap;
+      for (int attempt = 0; attempt < 4; ++attempt)
+      {
+        SurfaceComplex trial = c;
+        CuttingPlane plane;
+        plane.normal = normal;
+        plane.origin = centroid - (dot(normal, centroid) - offset) * normal;
+        plane.cutSubdomainCount = parts;
+        trial.planes.push_back(plane);
+        PlaneSplitStats stats;
+        if (!splitCell(trial, cell, normal, offset, planeId, below, above, splitOptions, stats,
+              lastError))
+        {
+          break;
+        }
+        const double missing = volumeCriterion ? labelVolume(trial, below) - target : 0.0;
+        if (std::fabs(missing) < bestError)
+        {
+          bestError = std::fabs(missing);
+          best = std::move(trial);
+          bestStats = stats;
+        }
+        if (bestError <= allowed)
+        {
+          break;
+        }
+        const double area = std::fabs(dot(normal, vectorArea(best.points, best.interfaces.back().edges)));
+        if (!(area > 0))
+        {
+          break;
+        }
+        offset -= missing / area;
+      }
+      if (bestError <= allowed || snap == 0.0)
+      {
+        break;
+      }
+    }
+    if (!std::isfinite(bestError))
+    {
+      error = lastError;
+      return false;
+    }
+    c = std::move(best);
+    result.splitStats.splitTriangles += bestStats.splitTriangles;
+    result.splitStats.snappedPoints += bestStats.snappedPoints;
+    result.splitStats.chordPoints += bestStats.chordPoints;
+    return true;
+  };
+
+  if (K > 1 && options.strategy == CutStrategy::ParallelPlanes)
+  {
+    // one direction for all planes; each plane cuts the rest of the object so
+    // that the slab below gets 1/(number of subdomains still to make) of it
+    const Vec3 normal = cutNormal(c.points, cellPoints(c, 0), options.direction);
+    int rest = 0;
+    for (int i = 0; i < K - 1; ++i)
+    {
+      int below = 0, above = 0;
+      if (!cut(rest, normal, 1.0 / (K - i), K - i, below, above))
+      {
+        result.error = error;
+        return result;
+      }
+      leaves.push_back(below);
+      rest = above;
+    }
+    leaves.push_back(rest);
+  }
+  else if (K > 1)
+  {
+    std::function<bool(int, int)> bisect = [&](int cell, int k) -> bool {
+      if (k == 1)
+      {
+        leaves.push_back(cell);
+        return true;
+      }
+      const Vec3 normal = cutNormal(c.points, cellPoints(c, cell), options.direction);
+      const int lowerCount = k / 2;
+      int below = 0, above = 0;
+      if (!cut(cell, normal, static_cast<double>(lowerCount) / k, k, below, above))
+      {
+        return false;
+      }
+      return bisect(below, lowerCount) && bisect(above, k - lowerCount);
+    };
+    if (!bisect(0, K))
+    {
+      result.error = error;
+      return result;
+    }
+  }
+  else
+  {
+    leaves.push_back(0);
+  }
+
+  // Renumber parts to subdomains 0..K-1.
+  std::vector<int> subdomainOfCell(nextCell, -1);
+  for (int s = 0; s < K; ++s)
+  {
+    subdomainOfCell[leaves[s]] = s;
+  }
+  auto relabel = [&](int cell) { return cell < 0 ? -1 : subdomainOfCell[cell]; };
+  for (auto& pair : c.trianglePairs)
+  {
+    pair = { relabel(pair[0]), relabel(pair[1]) };
+  }
+  for (auto& region : c.interfaces)
+  {
+    region.pair = { relabel(region.pair[0]), relabel(region.pair[1]) };
+    std::sort(region.edges.begin(), region.edges.end());
+  }
+  c.subdomainCount = K;
+
+  result.subdomainVolume = subdomainVolumes(c);
+  result.subdomainMeasure =
+    measureSubdomains(c, options.criterion, result.subdomainVolume);
+  double total = 0;
+  for (double m : result.subdomainMeasure)
+  {
+    total += m;
+  }
+  for (int s = 0; s < K; ++s)
+  {
+    const double target = total / K;
+    result.maximumImbalance =
+      std::max(result.maximumImbalance, std::fabs(result.subdomainMeasure[s] / target - 1.0));
+    if (!(result.subdomainVolume[s] > 0))
+    {
+      std::ostringstream msg;
+      msg << "subdomain " << s << " encloses no volume";
+      result.error = msg.str();
+      return result;
+    }
+  }
+  if (result.maximumImbalance > options.balanceTolerance)
+  {
+    std::ostringstream msg;
+    msg << "balance tolerance " << options.balanceTolerance
+        << " not reached: the worst subdomain deviates by " << result.maximumImbalance
+        << " from its target (the surface is too coarse near a plane for this tolerance)";
+    result.warnings.push_back(msg.str());
+  }
+  result.ok = true;
+  return result;
+}
+} // namespace ptm

@@ -1,0 +1,64 @@
+#ifndef PTM_VOLUME_BALANCED_DECOMPOSITION_H
+#define PTM_VOLUME_BALANCED_DECOMPOSITION_H
+// Stage 1 of the method: split a closed surface into K subdomains of equal
+// measure by cutting planes, producing the labeled surface complex
+// (SurfaceComplex.h) with interface regions still as boundary loops.
+//
+// Strategies: ParallelPlanes (K-1 parallel planes, the paper's prepartition
+// along one direction) and RecursiveBisection (a part meant for k subdomains
+// is cut at measure ratio floor(k/2):ceil(k/2); each plane cuts only its
+// part). Plane offsets are found iteratively (regula falsi on the measure
+// below the plane) until every part is within the balance tolerance.
+// Subdomain numbering: along the direction for parallel planes; depth-first,
+// lower side first, for recursive bisection.
+#include "CutDirection.h"
+#include "HalfSpaceMeasure.h"
+#include "PlaneSplit.h"
+#include "SurfaceOrientation.h"
+
+#include <string>
+#include <vector>
+
+namespace ptm
+{
+enum class CutStrategy
+{
+  ParallelPlanes,
+  RecursiveBisection
+};
+
+struct DecompositionOptions
+{
+  int numberOfSubdomains = 2;
+  CutStrategy strategy = CutStrategy::RecursiveBisection;
+  CutDirection direction = CutDirection::LongestExtent;
+  BalanceCriterion criterion = BalanceCriterion::Volume;
+  double balanceTolerance = 0.01; // allowed relative deviation of a subdomain from its target
+  double snapFraction = 0.1;      // see PlaneSplit.h
+};
+
+struct DecompositionResult
+{
+  bool ok = false;
+  std::string error;
+  std::vector<std::string> warnings;
+  SurfaceComplex complex;
+  OrientationReport orientation;
+  PlaneSplitStats splitStats;
+  std::vector<double> subdomainVolume;  // divergence theorem over each closed subdomain
+  std::vector<double> subdomainMeasure; // by the balance criterion
+  double totalVolume = 0;               // of the oriented input surface
+  double maximumImbalance = 0;          // max over subdomains of |measure / target - 1|
+};
+
+// The input triangles may be unmerged (STL); `sourceFaces` of the result
+// refer to the input triangle indices.
+DecompositionResult decomposeVolumeBalanced(
+  const TriangleSurface& input, const DecompositionOptions& options);
+
+// Human-readable names, for messages and properties.
+const char* toString(CutStrategy strategy);
+const char* toString(CutDirection direction);
+const char* toString(BalanceCriterion criterion);
+} // namespace ptm
+#endif

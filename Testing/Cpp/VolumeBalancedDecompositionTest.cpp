@@ -1,0 +1,305 @@
+#include "SubdomainAssignment.h"
+#include "TestSurfaces.h"
+#include "VolumeBalancedDecomposition.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+#include <sstream>
+
+using namespace ptm;
+using namespace ptm::test;
+
+namespace
+{
+struct Case
+{
+  std::string name;
+  TriangleSurface surface;
+};
+
+std::vector<Case> cases()
+{
+  return {
+    { "ball", icosphere({ 0.1, -0.2, 0.3 }, 1.0, 3) },
+    { "box", subdividedBox({ 0, 0, 0 }, { 2, 1, 1 }, 6) },
+    { "torus", torus({ 0, 0, 0 }, 2.0, 0.7, 40, 16) },
+    { "boxWithCavity",
+      merged(subdividedBox({ -2, -2, -2 }, { 2, 2, 2 }, 8), flipped(icosphere({ 0, 0, 0 }, 1.0, 3))) },
+    { "twoBodies",
+      merged(icosphere({ -2, 0, 0 }, 1.0, 3), subdividedBox({ 1, -1, -1 }, { 3, 1, 1 }, 6)) },
+  };
+}
+
+double triangleArea(const SurfaceComplex& c, const Triangle& t)
+{
+  return 0.5 * norm(cross(c.points[t[1]] - c.points[t[0]], c.points[t[2]] - c.points[t[0]]));
+}
+
+// Every subdomain's faces (surface triangles and interface regions, oriented
+// outward) must close up: each directed edge is matched by its reverse.
+void expectClosedSubdomains(const SurfaceComplex& c, const std::string& label)
+{
+  for (int s = 0; s < c.subdomainCount; ++s)
+  {
+    std::map<DirectedEdge, int> count;
+    auto add = [&](Index a, Index b) { ++count[{ a, b }]; };
+    for (const Triangle& t : subdomainTriangles(c, s))
+    {
+      add(t[0], t[1]);
+      add(t[1], t[2]);
+      add(t[2], t[0]);
+    }
+    for (const auto& region : c.interfaces)
+    {
+      for (const auto& e : region.edges)
+      {
+        if (region.pair[0] == s)
+        {
+          add(e[0], e[1]);
+        }
+        else if (region.pair[1] == s)
+        {
+          add(e[1], e[0]);
+        }
+      }
+    }
+    std::size_t unmatched = 0;
+    for (const auto& [e, n] : count)
+    {
+      auto it = count.find({ e[1], e[0] });
+      if (it == count.end() || it->second != n)
+      {
+        ++unmatched;
+      }
+    }
+    EXPECT_EQ(unmatched, 0u) << label << ": subdomain " << s << " is not closed";
+  }
+}
+
+void checkDecomposition(const Case& k, int K, CutStrategy strategy, CutDirection direction)
+{
+  std::ostringstream label;
+  label << k.name << " K=" << K << " " << toString(strategy) << " " << toString(direction);
+  DecompositionOptions options;
+  options.numberOfSubdomains = K;
+  options.strategy = strategy;
+  options.direction = direction;
+  const DecompositionResult r = decomposeVolumeBalanced(k.surface, options);
+  ASSERT_TRUE(r.ok) << label.str() << ": " << r.error;
+  const SurfaceComplex& c = r.complex;
+  ASSERT_EQ(c.subdomainCount, K);
+
+  // volumes: within tolerance of the target and adding up to the input volume
+  double sum = 0;
+  for (int s = 0; s < K; ++s)
+  {
+    sum += r.subdomainVolume[s];
+    EXPECT_NEAR(r.subdomainVolume[s] / (r.totalVolume / K), 1.0, options.balanceTolerance)
+      << label.str() << " subdomain " << s;
+  }
+  EXPECT_NEAR(sum / r.totalVolume, 1.0, 1e-9) << label.str();
+  EXPECT_NEAR(r.totalVolume, std::fabs(signedVolume(k.surface)), 1e-9 * r.totalVolume);
+
+  // every interface: closed loops, a real pair, a known plane
+  for (const auto& region : c.interfaces)
+  {
+    std::vector<std::vector<Index>> loops;
+    EXPECT_TRUE(chainLoops(region.edges, loops)) << label.str();
+    EXPECT_FALSE(loops.empty());
+    EXPECT_GE(region.pair[0], 0);
+    EXPECT_GE(region.pair[1], 0);
+    EXPECT_NE(region.pair[0], region.pair[1]);
+    EXPECT_LT(region.planeId, static_cast<int>(c.planes.size()));
+  }
+  // no zero-area triangle, every source face valid
+  const double scale = 1.0;
+  for (std::size_t i = 0; i < c.triangles.size(); ++i)
+  {
+    EXPECT_GT(triangleArea(c, c.triangles[i]), 1e-12 * scale) << label.str() << " triangle " << i;
+    EXPECT_GE(c.sourceFaces[i], 0);
+    EXPECT_LT(c.sourceFaces[i], static_cast<Index>(k.surface.triangles.size()));
+    EXPECT_EQ(c.trianglePairs[i][1], -1);
+  }
+  expectClosedSubdomains(c, label.str());
+}
+} // namespace
+
+class DecompositionCases : public ::testing::TestWithParam<std::tuple<int, CutStrategy>>
+{
+};
+
+TEST_P(DecompositionCases, EveryTestSurface)
+{
+  const auto [K, strategy] = GetParam();
+  for (const Case& k : cases())
+  {
+    checkDecomposition(k, K, strategy,
+      strategy == CutStrategy::ParallelPlanes ? CutDirection::LongestExtent : CutDirection::Inertia);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(KAndStrategy, DecompositionCases,
+  ::testing::Combine(::testing::Values(2, 3, 4, 7, 8),
+    ::testing::Values(CutStrategy::ParallelPlanes, CutStrategy::RecursiveBisection)),
+  [](const auto& info) {
+    return std::string(toString(std::get<1>(info.param))) + "_K" +
+      std::to_string(std::get<0>(info.param));
+  });
+
+TEST(VolumeBalancedDecomposition, AxisDirectionsAndLongestExtent)
+{
+  for (CutDirection d : { CutDirection::X, CutDirection::Y, CutDirection::Z, CutDirection::LongestExtent })
+  {
+    checkDecomposition(cases()[0], 4, CutStrategy::RecursiveBisection, d);
+    checkDecomposition(cases()[3], 3, CutStrategy::ParallelPlanes, d);
+  }
+}
+
+TEST(VolumeBalancedDecomposition, UnitCubeCutExactlyThroughVerticesAndEdges)
+{
+  // planes at x = 0.25, 0.5, 0.75 pass through grid vertices and along edges
+  const TriangleSurface cube = subdividedBox({ 0, 0, 0 }, { 1, 1, 1 }, 4);
+  DecompositionOptions options;
+  options.numberOfSubdomains = 4;
+  options.strategy = CutStrategy::ParallelPlanes;
+  options.direction = CutDirection::X;
+  const DecompositionResult r = decomposeVolumeBalanced(cube, options);
+  ASSERT_TRUE(r.ok) << r.error;
+  for (int s = 0; s < 4; ++s)
+  {
+    EXPECT_NEAR(r.subdomainVolume[s], 0.25, 1e-12);
+  }
+  // the planes fall on grid lines: no triangle is split, no point is added
+  EXPECT_EQ(r.complex.points.size(), cube.points.size());
+  EXPECT_EQ(r.complex.triangles.size(), cube.triangles.size());
+  EXPECT_EQ(r.complex.interfaces.size(), 3u);
+  for (const auto& region : r.complex.interfaces)
+  {
+    EXPECT_EQ(region.edges.size(), 16u); // 4 x 4 grid edges around each square
+  }
+  expectClosedSubdomains(r.complex, "cube");
+
+  // and a recursive bisection with 8 parts: three orthogonal planes through the centre
+  options.numberOfSubdomains = 8;
+  options.strategy = CutStrategy::RecursiveBisection;
+  options.direction = CutDirection::LongestExtent;
+  const DecompositionResult rb = decomposeVolumeBalanced(cube, options);
+  ASSERT_TRUE(rb.ok) << rb.error;
+  for (int s = 0; s < 8; ++s)
+  {
+    EXPECT_NEAR(rb.subdomainVolume[s], 0.125, 1e-12);
+  }
+  expectClosedSubdomains(rb.complex, "cube8");
+}
+
+TEST(VolumeBalancedDecomposition, TorusThroughItsHoleGivesTwoLoopsOnOnePlane)
+{
+  DecompositionOptions options;
+  options.numberOfSubdomains = 2;
+  options.strategy = CutStrategy::ParallelPlanes;
+  options.direction = CutDirection::X;
+  const DecompositionResult r = decomposeVolumeBalanced(torus({ 0, 0, 0 }, 2.0, 0.7, 40, 16), options);
+  ASSERT_TRUE(r.ok) << r.error;
+  ASSERT_EQ(r.complex.interfaces.size(), 1u);
+  std::vector<std::vector<Index>> loops;
+  ASSERT_TRUE(chainLoops(r.complex.interfaces[0].edges, loops));
+  EXPECT_EQ(loops.size(), 2u);
+}
+
+TEST(VolumeBalancedDecomposition, CavityCutThroughGivesAnInterfaceWithAHole)
+{
+  DecompositionOptions options;
+  options.numberOfSubdomains = 2;
+  options.strategy = CutStrategy::ParallelPlanes;
+  options.direction = CutDirection::Z;
+  const DecompositionResult r = decomposeVolumeBalanced(cases()[3].surface, options);
+  ASSERT_TRUE(r.ok) << r.error;
+  ASSERT_EQ(r.complex.interfaces.size(), 1u);
+  const auto& region = r.complex.interfaces[0];
+  std::vector<std::vector<Index>> loops;
+  ASSERT_TRUE(chainLoops(region.edges, loops));
+  ASSERT_EQ(loops.size(), 2u);
+  // one loop counter-clockwise (outer), one clockwise (hole) about the normal
+  const Vec3 n = r.complex.planes[0].normal;
+  int positive = 0, negative = 0;
+  for (const auto& loop : loops)
+  {
+    std::vector<DirectedEdge> edges;
+    for (std::size_t i = 0; i < loop.size(); ++i)
+    {
+      edges.push_back({ loop[i], loop[(i + 1) % loop.size()] });
+    }
+    (dot(vectorArea(r.complex.points, edges), n) > 0 ? positive : negative)++;
+  }
+  EXPECT_EQ(positive, 1);
+  EXPECT_EQ(negative, 1);
+}
+
+TEST(VolumeBalancedDecomposition, DeterministicAndCriteria)
+{
+  DecompositionOptions options;
+  options.numberOfSubdomains = 7;
+  const auto a = decomposeVolumeBalanced(cases()[2].surface, options);
+  const auto b = decomposeVolumeBalanced(cases()[2].surface, options);
+  ASSERT_TRUE(a.ok && b.ok);
+  EXPECT_EQ(a.complex.points, b.complex.points);
+  EXPECT_EQ(a.complex.triangles, b.complex.triangles);
+  EXPECT_EQ(a.complex.trianglePairs, b.complex.trianglePairs);
+
+  for (BalanceCriterion criterion : { BalanceCriterion::Nodes, BalanceCriterion::BoundaryFacets })
+  {
+    options.criterion = criterion;
+    options.numberOfSubdomains = 4;
+    const auto r = decomposeVolumeBalanced(cases()[1].surface, options);
+    ASSERT_TRUE(r.ok) << r.error;
+    double total = 0;
+    for (double m : r.subdomainMeasure)
+    {
+      total += m;
+    }
+    EXPECT_GT(total, 0);
+    EXPECT_LT(r.maximumImbalance, 0.25) << toString(criterion);
+  }
+}
+
+TEST(VolumeBalancedDecomposition, ClearErrors)
+{
+  DecompositionOptions options;
+  options.numberOfSubdomains = 0;
+  EXPECT_FALSE(decomposeVolumeBalanced(cases()[0].surface, options).ok);
+  options.numberOfSubdomains = 2;
+  TriangleSurface open = cases()[1].surface;
+  open.triangles.pop_back();
+  const auto r = decomposeVolumeBalanced(open, options);
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("not closed"), std::string::npos) << r.error;
+  TriangleSurface nan = cases()[0].surface;
+  nan.points[3][1] = std::nan("");
+  EXPECT_NE(decomposeVolumeBalanced(nan, options).error.find("NaN"), std::string::npos);
+  // far more subdomains than a tetrahedron can be split into
+  TriangleSurface tet;
+  tet.points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+  tet.triangles = { { 0, 2, 1 }, { 0, 1, 3 }, { 0, 3, 2 }, { 1, 2, 3 } };
+  options.numberOfSubdomains = 64;
+  const auto many = decomposeVolumeBalanced(tet, options);
+  if (!many.ok)
+  {
+    EXPECT_FALSE(many.error.empty());
+  }
+}
+
+TEST(SubdomainAssignment, OneEachOrBalancedByMeasure)
+{
+  EXPECT_EQ(assignSubdomainsToRanks({ 1, 1, 1 }, 3), (std::vector<int>{ 0, 1, 2 }));
+  const std::vector<int> owner = assignSubdomainsToRanks({ 5, 4, 3, 3, 2, 1 }, 2);
+  double load[2] = { 0, 0 };
+  const double m[6] = { 5, 4, 3, 3, 2, 1 };
+  for (int s = 0; s < 6; ++s)
+  {
+    load[owner[s]] += m[s];
+  }
+  EXPECT_DOUBLE_EQ(load[0], 9);
+  EXPECT_DOUBLE_EQ(load[1], 9);
+}
