@@ -46,6 +46,8 @@ struct SurfaceComplex
   std::vector<Triangle> triangles;
   std::vector<SubdomainPair> trianglePairs;
   std::vector<Index> sourceFaces; // input triangle each piece came from; -1 on interface triangles
+  std::vector<int> trianglePlanes; // plane of each interface triangle, -1 on surface triangles;
+                                   // may be empty while there are no interface triangles
 
   std::vector<InterfaceRegion> interfaces;
   std::vector<CuttingPlane> planes;

@@ -1,0 +1,117 @@
+#include "SubdomainSurface.h"
+
+#include <algorithm>
+#include <map>
+#include <sstream>
+#include <tuple>
+
+namespace ptm
+{
+bool extractSubdomainSurface(const SurfaceComplex& c, const std::vector<Index>& globalIds,
+  int s, SubdomainSurface& out, std::string& error)
+{
+  out = SubdomainSurface();
+  for (const auto& region : c.interfaces)
+  {
+    if (region.pair[0] == s || region.pair[1] == s)
+    {
+      std::ostringstream msg;
+      msg << "subdomain " << s
+          << " still has untriangulated interface loops: run InterfaceTriangulator first";
+      error = msg.str();
+      return false;
+    }
+  }
+  auto gid = [&](Index p) { return globalIds.empty() ? p : globalIds[p]; };
+  struct Face
+  {
+    std::array<Index, 3> ids; // global ids, smallest first
+    Index source;
+    int other;
+  };
+  std::vector<Face> faces;
+  for (std::size_t i = 0; i < c.triangles.size(); ++i)
+  {
+    const auto& pair = c.trianglePairs[i];
+    if (pair[0] != s && pair[1] != s)
+    {
+      continue;
+    }
+    Triangle t = c.triangles[i];
+    if (pair[1] == s)
+    {
+      std::swap(t[1], t[2]);
+    }
+    std::array<Index, 3> g{ gid(t[0]), gid(t[1]), gid(t[2]) };
+    const int first = static_cast<int>(std::min_element(g.begin(), g.end()) - g.begin());
+    std::rotate(g.begin(), g.begin() + first, g.end());
+    faces.push_back({ g, c.sourceFaces.empty() ? -1 : c.sourceFaces[i], pair[0] == s ? pair[1] : pair[0] });
+  }
+  if (faces.empty())
+  {
+    std::ostringstream msg;
+    msg << "subdomain " << s << " has no triangles in this piece";
+    error = msg.str();
+    return false;
+  }
+  std::sort(faces.begin(), faces.end(),
+    [](const Face& a, const Face& b) { return a.ids < b.ids; });
+
+  // closedness: every directed edge matched by its reverse exactly once
+  std::map<std::pair<Index, Index>, int> edges;
+  for (const Face& f : faces)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      ++edges[{ f.ids[k], f.ids[(k + 1) % 3] }];
+    }
+  }
+  std::size_t bad = 0;
+  for (const auto& [e, n] : edges)
+  {
+    auto it = edges.find({ e.second, e.first });
+    if (n != 1 || it == edges.end() || it->second != 1)
+    {
+      ++bad;
+    }
+  }
+  if (bad > 0)
+  {
+    std::ostringstream msg;
+    msg << "the surface of subdomain " << s << " is not closed: " << bad
+        << " edges are not shared by exactly two consistently oriented triangles";
+    error = msg.str();
+    return false;
+  }
+
+  std::map<Index, Index> localOf; // global -> local point, in global id order
+  std::map<Index, Index> pointOfGlobal;
+  for (std::size_t i = 0; i < c.triangles.size(); ++i)
+  {
+    for (Index p : c.triangles[i])
+    {
+      pointOfGlobal.emplace(gid(p), p);
+    }
+  }
+  for (const Face& f : faces)
+  {
+    for (Index g : f.ids)
+    {
+      localOf.emplace(g, 0);
+    }
+  }
+  for (auto& [g, local] : localOf)
+  {
+    local = static_cast<Index>(out.globalIds.size());
+    out.globalIds.push_back(g);
+    out.surface.points.push_back(c.points[pointOfGlobal.at(g)]);
+  }
+  for (const Face& f : faces)
+  {
+    out.surface.triangles.push_back({ localOf[f.ids[0]], localOf[f.ids[1]], localOf[f.ids[2]] });
+    out.sourceFaces.push_back(f.source);
+    out.otherSide.push_back(f.other);
+  }
+  return true;
+}
+} // namespace ptm
