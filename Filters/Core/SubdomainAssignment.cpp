@@ -18,16 +18,14 @@ std::vector<int> assignSubdomainsToRanks(const std::vector<double>& measures, in
     std::iota(owner.begin(), owner.end(), 0);
     return owner;
   }
-  std::vector<int> order(K);
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-    [&](int a, int b) { return measures[a] > measures[b]; });
-  std::vector<double> load(ranks, 0.0);
-  for (int s : order)
+  const double total = std::accumulate(measures.begin(), measures.end(), 0.0);
+  double before = 0;
+  for (int s = 0; s < K; ++s)
   {
-    const int r = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
-    owner[s] = r;
-    load[r] += measures[s];
+    const double middle = before + 0.5 * measures[s];
+    before += measures[s];
+    const int r = total > 0 ? static_cast<int>(ranks * middle / total) : s * ranks / K;
+    owner[s] = std::min(std::max(r, 0), ranks - 1);
   }
   return owner;
 }

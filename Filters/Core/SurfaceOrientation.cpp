@@ -26,27 +26,68 @@ std::uint64_t edgeKey(Index a, Index b, Index pointCount)
 } // namespace
 
 std::size_t mergeDuplicatePoints(TriangleSurface& s, std::size_t& droppedTriangles,
-  std::vector<Index>& sourceOfTriangle)
+  std::vector<Index>& sourceOfTriangle, double relativeTolerance)
 {
   const std::size_t n = s.points.size();
-  std::vector<Index> order(n);
+  Vec3 lo = n ? s.points[0] : Vec3{ 0, 0, 0 }, hi = lo;
+  for (const auto& p : s.points)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = std::min(lo[k], p[k]);
+      hi[k] = std::max(hi[k], p[k]);
+    }
+  }
+  const double tolerance = relativeTolerance * norm(hi - lo);
+  // Points within the tolerance of an earlier point are merged into it: a
+  // hash grid with cells of the tolerance's size, searched 3x3x3 around a point.
+  std::vector<Index> representative(n);
+  std::unordered_map<std::uint64_t, std::vector<Index>> grid;
+  const double cell = tolerance > 0 ? tolerance : 1.0;
+  auto cellOf = [&](const Vec3& p, int k) {
+    return static_cast<std::int64_t>(std::floor((p[k] - lo[k]) / cell));
+  };
+  auto key = [](std::int64_t i, std::int64_t j, std::int64_t k) {
+    return static_cast<std::uint64_t>(i) * 73856093u ^ static_cast<std::uint64_t>(j) * 19349663u ^
+      static_cast<std::uint64_t>(k) * 83492791u;
+  };
   for (std::size_t i = 0; i < n; ++i)
   {
-    order[i] = static_cast<Index>(i);
-  }
-  std::stable_sort(order.begin(), order.end(),
-    [&](Index a, Index b) { return s.points[a] < s.points[b]; });
-  std::vector<Index> representative(n);
-  for (std::size_t k = 0; k < n; ++k)
-  {
-    const Index i = order[k];
-    if (k > 0 && s.points[order[k - 1]] == s.points[i])
+    const Vec3& p = s.points[i];
+    const std::int64_t ci = cellOf(p, 0), cj = cellOf(p, 1), ck = cellOf(p, 2);
+    Index found = -1;
+    for (std::int64_t di = -1; di <= 1 && found < 0; ++di)
     {
-      representative[i] = representative[order[k - 1]];
+      for (std::int64_t dj = -1; dj <= 1 && found < 0; ++dj)
+      {
+        for (std::int64_t dk = -1; dk <= 1 && found < 0; ++dk)
+        {
+          auto it = grid.find(key(ci + di, cj + dj, ck + dk));
+          if (it == grid.end())
+          {
+            continue;
+          }
+          for (Index j : it->second)
+          {
+            const Vec3 d = s.points[j] - p;
+            if (std::fabs(d[0]) <= tolerance && std::fabs(d[1]) <= tolerance &&
+              std::fabs(d[2]) <= tolerance)
+            {
+              found = j;
+              break;
+            }
+          }
+        }
+      }
+    }
+    if (found >= 0)
+    {
+      representative[i] = found;
     }
     else
     {
-      representative[i] = i; // the smallest index of its group comes first (stable sort)
+      representative[i] = static_cast<Index>(i);
+      grid[key(ci, cj, ck)].push_back(static_cast<Index>(i));
     }
   }
   // renumber the kept points in their original order, dropping unused ones

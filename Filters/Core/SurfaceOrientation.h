@@ -31,12 +31,15 @@ struct OrientationResult
   OrientationReport report;
 };
 
-// Merges points with bit-identical coordinates (keeping the first), removes
-// unused points and triangles that repeat a corner. Keeps triangle order.
+// Merges points that coincide within relativeTolerance x the bounding-box
+// diagonal (per coordinate) into the first of them, removes unused points and
+// triangles that repeat a corner. Keeps triangle and point order. STL stores
+// every corner of every triangle; pieces of a distributed source repeat
+// their seam points with round-off differences.
 // Returns the number of merged points; `droppedTriangles` gets the count of
 // collapsed triangles and `sourceOfTriangle` the input index of each kept one.
 std::size_t mergeDuplicatePoints(TriangleSurface& surface, std::size_t& droppedTriangles,
-  std::vector<Index>& sourceOfTriangle);
+  std::vector<Index>& sourceOfTriangle, double relativeTolerance = 1e-10);
 
 // Orients every shell (edge-connected component) consistently and by nesting.
 // Fails with a message if an edge is used by other than exactly two triangles

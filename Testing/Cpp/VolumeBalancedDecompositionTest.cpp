@@ -302,4 +302,20 @@ TEST(SubdomainAssignment, OneEachOrBalancedByMeasure)
   }
   EXPECT_DOUBLE_EQ(load[0], 9);
   EXPECT_DOUBLE_EQ(load[1], 9);
+  // contiguous blocks: neighbours in numbering share a rank
+  EXPECT_EQ(assignSubdomainsToRanks({ 1, 1, 1, 1, 1, 1, 1, 1 }, 2),
+    (std::vector<int>{ 0, 0, 0, 0, 1, 1, 1, 1 }));
+  // every rank within one subdomain of the mean
+  const std::vector<double> seven{ 1.0, 1.01, 0.99, 1.0, 1.0, 1.005, 0.995 };
+  const std::vector<int> three = assignSubdomainsToRanks(seven, 3);
+  std::vector<double> loads(3, 0.0);
+  for (int s = 0; s < 7; ++s)
+  {
+    loads[three[s]] += seven[s];
+  }
+  for (double l : loads)
+  {
+    EXPECT_LE(std::fabs(l - 7.0 / 3), 1.01);
+    EXPECT_GT(l, 0);
+  }
 }
