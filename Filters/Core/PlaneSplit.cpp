@@ -28,18 +28,6 @@ struct PairHash
   }
 };
 
-// In-plane orthonormal basis from a unit normal, deterministic.
-void planeBasis(const Vec3& n, Vec3& e1, Vec3& e2)
-{
-  const int axis = std::fabs(n[0]) <= std::fabs(n[1])
-    ? (std::fabs(n[0]) <= std::fabs(n[2]) ? 0 : 2)
-    : (std::fabs(n[1]) <= std::fabs(n[2]) ? 1 : 2);
-  Vec3 a{ 0, 0, 0 };
-  a[axis] = 1;
-  e1 = normalized(cross(n, a));
-  e2 = cross(n, e1);
-}
-
 // Winding number of directed edges (region to the left) around q, in the plane basis.
 int windingNumber2D(const std::vector<Vec3>& points, const std::vector<DirectedEdge>& edges,
   const Vec3& e1, const Vec3& e2, const Vec3& q)

@@ -22,5 +22,18 @@ inline Vec3 normalized(const Vec3& a)
   const double n = norm(a);
   return n > 0 ? (1.0 / n) * a : a;
 }
+
+// A right-handed orthonormal basis (e1, e2, n) of the plane with unit normal
+// n, computed from n alone (the same n always gives the same basis).
+inline void planeBasis(const Vec3& n, Vec3& e1, Vec3& e2)
+{
+  const int axis = std::fabs(n[0]) <= std::fabs(n[1])
+    ? (std::fabs(n[0]) <= std::fabs(n[2]) ? 0 : 2)
+    : (std::fabs(n[1]) <= std::fabs(n[2]) ? 1 : 2);
+  Vec3 a{ 0, 0, 0 };
+  a[axis] = 1;
+  e1 = normalized(cross(n, a));
+  e2 = cross(n, e1);
+}
 } // namespace ptm
 #endif
