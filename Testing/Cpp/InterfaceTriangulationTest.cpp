@@ -1,0 +1,286 @@
+#include "InterfaceTriangulation.h"
+#include "TestSurfaces.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <set>
+
+using namespace ptm;
+using namespace ptm::test;
+
+namespace
+{
+// Adds a closed loop of 2D points (in the basis of `plane`) to the region.
+void addLoop(PlanarRegion& r, const std::vector<std::array<double, 2>>& loop)
+{
+  Vec3 e1, e2;
+  planeBasis(r.normal, e1, e2);
+  const Index first = static_cast<Index>(r.points.size());
+  for (const auto& p : loop)
+  {
+    r.points.push_back(r.origin + p[0] * e1 + p[1] * e2);
+  }
+  const Index m = static_cast<Index>(loop.size());
+  for (Index i = 0; i < m; ++i)
+  {
+    r.edges.push_back({ first + i, first + (i + 1) % m });
+  }
+}
+
+std::vector<std::array<double, 2>> square(double x0, double y0, double side, int perSide, bool ccw)
+{
+  std::vector<std::array<double, 2>> loop;
+  const double corners[4][2] = { { x0, y0 }, { x0 + side, y0 }, { x0 + side, y0 + side }, { x0, y0 + side } };
+  for (int c = 0; c < 4; ++c)
+  {
+    for (int k = 0; k < perSide; ++k)
+    {
+      const double t = static_cast<double>(k) / perSide;
+      const auto& a = corners[c];
+      const auto& b = corners[(c + 1) % 4];
+      loop.push_back({ a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]) });
+    }
+  }
+  if (!ccw)
+  {
+    std::reverse(loop.begin(), loop.end());
+  }
+  return loop;
+}
+
+std::vector<std::array<double, 2>> circle(double cx, double cy, double radius, int count, bool ccw)
+{
+  std::vector<std::array<double, 2>> loop;
+  for (int k = 0; k < count; ++k)
+  {
+    const double a = (ccw ? 1 : -1) * 2 * kPi * k / count;
+    loop.push_back({ cx + radius * std::cos(a), cy + radius * std::sin(a) });
+  }
+  return loop;
+}
+
+PlanarRegion plane(const Vec3& normal = { 0, 0, 1 }, const Vec3& origin = { 0, 0, 0 })
+{
+  PlanarRegion r;
+  r.origin = origin;
+  r.normal = normalized(normal);
+  return r;
+}
+
+// Checks the contract; returns the triangulated area.
+double check(const PlanarRegion& r, const InterfaceTriangulationResult& result, double minimumAngle)
+{
+  EXPECT_TRUE(result.ok) << result.error;
+  const auto& t = result.triangulation;
+  const std::size_t n = r.points.size();
+  auto point = [&](Index i) { return i < static_cast<Index>(n) ? r.points[i] : t.newPoints[i - n]; };
+  // new points on the plane and strictly not on the boundary
+  for (const Vec3& p : t.newPoints)
+  {
+    EXPECT_NEAR(dot(p - r.origin, r.normal), 0.0, 1e-12);
+  }
+  std::map<std::pair<Index, Index>, int> directed;
+  double area = 0;
+  std::size_t below = 0;
+  for (const auto& tri : t.triangles)
+  {
+    const Vec3 a = point(tri[0]), b = point(tri[1]), c = point(tri[2]);
+    const double twice = dot(cross(b - a, c - a), r.normal);
+    EXPECT_GT(twice, 0) << "triangle not counter-clockwise about the normal";
+    area += 0.5 * twice;
+    for (int k = 0; k < 3; ++k)
+    {
+      ++directed[{ tri[k], tri[(k + 1) % 3] }];
+    }
+    auto angle = [](const Vec3& p, const Vec3& q, const Vec3& s) {
+      return std::atan2(norm(cross(q - p, s - p)), dot(q - p, s - p)) * 180 / kPi;
+    };
+    if (std::min({ angle(a, b, c), angle(b, c, a), angle(c, a, b) }) < minimumAngle)
+    {
+      ++below;
+    }
+  }
+  EXPECT_EQ(below, t.trianglesBelowMinimumAngle);
+  // every boundary segment is an edge of exactly one triangle, in its direction
+  for (const auto& e : r.edges)
+  {
+    const std::pair<Index, Index> forward{ e[0], e[1] }, backward{ e[1], e[0] };
+    EXPECT_EQ(directed[forward], 1);
+    EXPECT_EQ(directed.count(backward), 0u);
+  }
+  // every other edge is shared by two triangles in opposite directions
+  std::set<std::pair<Index, Index>> boundary;
+  for (const auto& e : r.edges)
+  {
+    boundary.insert({ e[0], e[1] });
+  }
+  for (const auto& [e, count] : directed)
+  {
+    if (!boundary.count(e))
+    {
+      EXPECT_EQ(count, 1);
+      const std::pair<Index, Index> reverse{ e.second, e.first };
+      EXPECT_EQ(directed.count(reverse), 1u) << "open interior edge";
+    }
+  }
+  return area;
+}
+} // namespace
+
+TEST(InterfaceTriangulation, CoarseAndFineSquares)
+{
+  for (int perSide : { 1, 10, 40 })
+  {
+    PlanarRegion r = plane();
+    addLoop(r, square(0, 0, 1, perSide, true));
+    const auto result = triangulateInterface(r, {});
+    EXPECT_NEAR(check(r, result, 20.7), 1.0, 1e-12);
+    EXPECT_EQ(result.triangulation.trianglesBelowMinimumAngle, 0u) << perSide;
+    // sizes follow the boundary spacing
+    const auto& t = result.triangulation;
+    double longest = 0;
+    for (const auto& tri : t.triangles)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        auto p = [&](Index i) { return i < static_cast<Index>(r.points.size()) ? r.points[i] : t.newPoints[i - r.points.size()]; };
+        longest = std::max(longest, norm(p(tri[k]) - p(tri[(k + 1) % 3])));
+      }
+    }
+    if (perSide == 40)
+    {
+      // automatic size: at most 1.5 x the boundary spacing, edges within about 2.2 x of it
+      EXPECT_LT(longest, 2.2 / perSide) << "interior triangles much coarser than the boundary";
+      EXPECT_GT(t.newPoints.size(), 500u);
+    }
+  }
+}
+
+TEST(InterfaceTriangulation, HolesComponentsAndLShape)
+{
+  PlanarRegion r = plane({ 0, 0, 1 }, { 0, 0, 2 });
+  addLoop(r, square(0, 0, 4, 16, true));
+  addLoop(r, square(1, 1, 1, 4, false));      // square hole
+  addLoop(r, circle(3, 3, 0.5, 24, false));   // round hole
+  addLoop(r, square(10, 0, 1, 4, true));       // second component
+  const auto result = triangulateInterface(r, {});
+  const double holeArea = 0.5 * 24 * 0.25 * std::sin(2 * kPi / 24);
+  EXPECT_NEAR(check(r, result, 20.7), 16.0 - 1.0 - holeArea + 1.0, 1e-10);
+
+  PlanarRegion l = plane();
+  addLoop(l, { { 0, 0 }, { 2, 0 }, { 2, 1 }, { 1, 1 }, { 1, 2 }, { 0, 2 } });
+  EXPECT_NEAR(check(l, triangulateInterface(l, {}), 20.7), 3.0, 1e-12);
+}
+
+TEST(InterfaceTriangulation, SharpCornerIsCountedNotFatal)
+{
+  PlanarRegion r = plane();
+  addLoop(r, { { 0, 0 }, { 1, 0.05 }, { 1, 0.1 } }); // a sliver of about 2.9 degrees
+  const auto result = triangulateInterface(r, {});
+  check(r, result, 20.7);
+  EXPECT_GE(result.triangulation.trianglesBelowMinimumAngle, 1u);
+}
+
+TEST(InterfaceTriangulation, LoopsTouchingAtAVertex)
+{
+  PlanarRegion r = plane();
+  addLoop(r, { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } });
+  addLoop(r, { { 1, 1 }, { 2, 1 }, { 2, 2 }, { 1, 2 } });
+  // the second loop's first point is the first loop's corner (1, 1): share it
+  const Index duplicate = 4, shared = 2;
+  for (auto& e : r.edges)
+  {
+    for (Index& v : e)
+    {
+      v = v == duplicate ? shared : v;
+    }
+  }
+  r.points[duplicate] = { 7, 7, 7 }; // unused now; must be ignored
+  EXPECT_NEAR(check(r, triangulateInterface(r, {}), 20.7), 2.0, 1e-12);
+}
+
+TEST(InterfaceTriangulation, TiltedPlaneWithPointsSlightlyOff)
+{
+  PlanarRegion r = plane({ 1, 2, 3 }, { 0.3, -1, 2 });
+  addLoop(r, circle(0, 0, 1, 64, true));
+  for (std::size_t i = 0; i < r.points.size(); i += 3)
+  {
+    r.points[i] = r.points[i] + 1e-12 * r.normal;
+  }
+  const auto result = triangulateInterface(r, {});
+  EXPECT_NEAR(check(r, result, 20.7), 0.5 * 64 * std::sin(2 * kPi / 64), 1e-9);
+  EXPECT_EQ(result.triangulation.trianglesBelowMinimumAngle, 0u);
+}
+
+TEST(InterfaceTriangulation, DeterministicAndBoundsRespected)
+{
+  PlanarRegion r = plane();
+  addLoop(r, circle(0, 0, 1, 100, true));
+  addLoop(r, circle(0.3, 0.1, 0.2, 20, false));
+  InterfaceTriangulationOptions options;
+  options.minimumAngleDegrees = 28;
+  const auto a = triangulateInterface(r, options);
+  const auto b = triangulateInterface(r, options);
+  ASSERT_TRUE(a.ok && b.ok);
+  EXPECT_EQ(a.triangulation.triangles, b.triangulation.triangles);
+  EXPECT_EQ(a.triangulation.newPoints, b.triangulation.newPoints);
+  check(r, a, 28);
+  EXPECT_GE(a.triangulation.minimumAngleDegrees, 20.0);
+  options.maximumEdgeLength = 0.05;
+  const auto fine = triangulateInterface(r, options);
+  check(r, fine, 28);
+  EXPECT_GT(fine.triangulation.triangles.size(), 3 * a.triangulation.triangles.size());
+}
+
+TEST(InterfaceTriangulation, ClearErrors)
+{
+  PlanarRegion empty = plane();
+  EXPECT_FALSE(triangulateInterface(empty, {}).ok);
+
+  PlanarRegion open = plane();
+  addLoop(open, square(0, 0, 1, 2, true));
+  open.edges.pop_back();
+  auto r = triangulateInterface(open, {});
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("closed loops"), std::string::npos) << r.error;
+
+  PlanarRegion crossing = plane();
+  addLoop(crossing, { { 0, 0 }, { 1, 1 }, { 1, 0 }, { 0, 1 } }); // a bow tie
+  r = triangulateInterface(crossing, {});
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("cross"), std::string::npos) << r.error;
+
+  PlanarRegion inverted = plane();
+  addLoop(inverted, square(0, 0, 1, 2, false)); // clockwise outer loop
+  r = triangulateInterface(inverted, {});
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("oriented"), std::string::npos) << r.error;
+
+  PlanarRegion nan = plane();
+  addLoop(nan, square(0, 0, 1, 2, true));
+  nan.points[1][0] = std::nan("");
+  EXPECT_FALSE(triangulateInterface(nan, {}).ok);
+
+  PlanarRegion good = plane();
+  addLoop(good, square(0, 0, 1, 2, true));
+  InterfaceTriangulationOptions bad;
+  bad.minimumAngleDegrees = 45;
+  EXPECT_FALSE(triangulateInterface(good, bad).ok);
+}
+
+TEST(InterfaceTriangulation, LargeRegionFigure)
+{
+  PlanarRegion r = plane();
+  addLoop(r, circle(0, 0, 1, 1000, true));
+  const auto start = std::chrono::steady_clock::now();
+  const auto result = triangulateInterface(r, {});
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ASSERT_TRUE(result.ok) << result.error;
+  std::cout << "[ figure ] 1000 boundary points: " << result.triangulation.triangles.size()
+            << " triangles, " << result.triangulation.newPoints.size() << " new points, minimum angle "
+            << result.triangulation.minimumAngleDegrees << " degrees, " << seconds << " s\n";
+  EXPECT_EQ(result.triangulation.trianglesBelowMinimumAngle, 0u);
+}
