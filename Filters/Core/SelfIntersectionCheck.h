@@ -1,0 +1,24 @@
+#ifndef PTM_SELF_INTERSECTION_CHECK_H
+#define PTM_SELF_INTERSECTION_CHECK_H
+// Whether a closed triangle surface intersects itself, with CGAL's exact
+// predicates (Polygon_mesh_processing::does_self_intersect). Two triangles
+// that meet only along their shared edge or corner do not count.
+#include "TriangleSurface.h"
+
+#include <string>
+
+namespace ptm
+{
+struct SelfIntersectionReport
+{
+  bool checked = false;        // false if the surface could not be turned into a mesh
+  bool intersects = false;
+  std::size_t pairs = 0;       // intersecting triangle pairs (up to `limit`)
+  Index firstTriangle = -1;    // one pair, for the message
+  Index secondTriangle = -1;
+  std::string note;            // why it could not be checked
+};
+
+SelfIntersectionReport checkSelfIntersection(const TriangleSurface& surface, std::size_t limit = 1);
+} // namespace ptm
+#endif

@@ -1,0 +1,556 @@
+#include "TetGenSubdomainMesher.h"
+
+#include "SelfIntersectionCheck.h"
+
+#include <tetgen.h>
+
+#include <csignal>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <map>
+#include <new>
+#include <queue>
+#include <set>
+#include <sstream>
+#include <vector>
+
+namespace ptm
+{
+namespace
+{
+// Connected components of the triangles through shared edges.
+std::vector<std::vector<Index>> shells(const TriangleSurface& s)
+{
+  std::map<std::pair<Index, Index>, std::vector<Index>> byEdge;
+  for (std::size_t t = 0; t < s.triangles.size(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Index a = s.triangles[t][k], b = s.triangles[t][(k + 1) % 3];
+      byEdge[{ std::min(a, b), std::max(a, b) }].push_back(static_cast<Index>(t));
+    }
+  }
+  std::vector<int> shell(s.triangles.size(), -1);
+  std::vector<std::vector<Index>> out;
+  for (std::size_t seed = 0; seed < s.triangles.size(); ++seed)
+  {
+    if (shell[seed] >= 0)
+    {
+      continue;
+    }
+    out.emplace_back();
+    std::queue<Index> q;
+    q.push(static_cast<Index>(seed));
+    shell[seed] = static_cast<int>(out.size() - 1);
+    while (!q.empty())
+    {
+      const Index t = q.front();
+      q.pop();
+      out.back().push_back(t);
+      for (int k = 0; k < 3; ++k)
+      {
+        const Index a = s.triangles[t][k], b = s.triangles[t][(k + 1) % 3];
+        for (Index u : byEdge[{ std::min(a, b), std::max(a, b) }])
+        {
+          if (shell[u] < 0)
+          {
+            shell[u] = shell[seed];
+            q.push(u);
+          }
+        }
+      }
+    }
+  }
+  return out;
+}
+
+// A point strictly inside a cavity bounded by `triangles` (oriented into the
+// cavity): from the centroid of the largest triangle along its normal, half
+// way to the nearest other triangle hit.
+bool holePoint(const TriangleSurface& s, const std::vector<Index>& triangles, Vec3& hole)
+{
+  Index best = triangles.front();
+  double bestArea = -1;
+  for (Index t : triangles)
+  {
+    const auto& tri = s.triangles[t];
+    const double a = norm(cross(s.points[tri[1]] - s.points[tri[0]], s.points[tri[2]] - s.points[tri[0]]));
+    if (a > bestArea)
+    {
+      bestArea = a;
+      best = t;
+    }
+  }
+  const auto& tri = s.triangles[best];
+  const Vec3 o = (1.0 / 3.0) * (s.points[tri[0]] + s.points[tri[1]] + s.points[tri[2]]);
+  const Vec3 d = normalized(cross(s.points[tri[1]] - s.points[tri[0]], s.points[tri[2]] - s.points[tri[0]]));
+  double nearest = std::numeric_limits<double>::infinity();
+  for (Index t : triangles)
+  {
+    if (t == best)
+    {
+      continue;
+    }
+    // Moeller-Trumbore
+    const auto& u = s.triangles[t];
+    const Vec3 e1 = s.points[u[1]] - s.points[u[0]], e2 = s.points[u[2]] - s.points[u[0]];
+    const Vec3 p = cross(d, e2);
+    const double det = dot(e1, p);
+    if (std::fabs(det) < 1e-300)
+    {
+      continue;
+    }
+    const Vec3 tv = o - s.points[u[0]];
+    const double bu = dot(tv, p) / det;
+    const Vec3 q = cross(tv, e1);
+    const double bv = dot(d, q) / det;
+    const double dist = dot(e2, q) / det;
+    if (bu >= 0 && bv >= 0 && bu + bv <= 1 && dist > 0)
+    {
+      nearest = std::min(nearest, dist);
+    }
+  }
+  if (!std::isfinite(nearest))
+  {
+    return false;
+  }
+  hole = o + (0.5 * nearest) * d;
+  return true;
+}
+
+bool validExtraSwitches(const std::string& s)
+{
+  for (char ch : s)
+  {
+    if (!(std::strchr("OSTV", ch) || std::isdigit(static_cast<unsigned char>(ch)) || ch == '.' ||
+          ch == 'e' || ch == '-' || ch == '/'))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+bool writeAll(int fd, const void* data, std::size_t bytes)
+{
+  const char* p = static_cast<const char*>(data);
+  while (bytes > 0)
+  {
+    const ssize_t w = ::write(fd, p, bytes);
+    if (w < 0 && errno == EINTR)
+    {
+      continue;
+    }
+    if (w <= 0)
+    {
+      return false;
+    }
+    p += w;
+    bytes -= static_cast<std::size_t>(w);
+  }
+  return true;
+}
+
+bool readAll(int fd, void* data, std::size_t bytes)
+{
+  char* p = static_cast<char*>(data);
+  while (bytes > 0)
+  {
+    const ssize_t r = ::read(fd, p, bytes);
+    if (r < 0 && errno == EINTR)
+    {
+      continue;
+    }
+    if (r <= 0)
+    {
+      return false;
+    }
+    p += r;
+    bytes -= static_cast<std::size_t>(r);
+  }
+  return true;
+}
+
+struct ChildHeader
+{
+  int status = 0; // 0 meshed, 1 TetGen error code, 2 out of memory, 3 bad switches
+  int code = 0;
+  long long points = 0;
+  long long tets = 0;
+};
+
+// Runs TetGen in a child process: libtet 1.5 frees its memory in
+// terminatetetgen() and again in the destructor while the int it throws
+// unwinds, so every TetGen failure would otherwise crash the whole
+// (MPI, ParaView) process. The child sends the mesh back through a pipe.
+bool runTetGenIsolated(tetgenio& in, const std::string& switches, std::vector<double>& points,
+  std::vector<int>& tets, int& status, int& code, std::string& error)
+{
+  int fds[2];
+  if (::pipe(fds) != 0)
+  {
+    error = "cannot create a pipe for the TetGen process";
+    return false;
+  }
+  const pid_t pid = ::fork();
+  if (pid < 0)
+  {
+    ::close(fds[0]);
+    ::close(fds[1]);
+    error = "cannot start a process for TetGen (fork failed)";
+    return false;
+  }
+  if (pid == 0)
+  {
+    ::close(fds[0]);
+    std::signal(SIGSEGV, SIG_DFL);
+    std::signal(SIGABRT, SIG_DFL);
+    std::signal(SIGBUS, SIG_DFL);
+    ChildHeader h;
+    tetgenio out;
+    try
+    {
+      tetgenbehavior behaviour;
+      std::vector<char> text(switches.begin(), switches.end());
+      text.push_back('\0');
+      if (!behaviour.parse_commandline(text.data()))
+      {
+        h.status = 3;
+      }
+      else
+      {
+        tetrahedralize(&behaviour, &in, &out);
+      }
+    }
+    catch (int c)
+    {
+      h.status = 1;
+      h.code = c;
+    }
+    catch (const std::bad_alloc&)
+    {
+      h.status = 2;
+    }
+    catch (...)
+    {
+      h.status = 1;
+      h.code = 2;
+    }
+    if (h.status == 0)
+    {
+      h.points = out.numberofpoints;
+      h.tets = out.numberoftetrahedra;
+    }
+    bool ok = writeAll(fds[1], &h, sizeof(h));
+    if (ok && h.status == 0)
+    {
+      ok = writeAll(fds[1], out.pointlist, sizeof(REAL) * 3 * static_cast<std::size_t>(h.points)) &&
+        writeAll(fds[1], out.tetrahedronlist, sizeof(int) * 4 * static_cast<std::size_t>(h.tets));
+    }
+    ::close(fds[1]);
+    ::_exit(ok ? 0 : 1);
+  }
+  ::close(fds[1]);
+  ChildHeader h;
+  bool received = readAll(fds[0], &h, sizeof(h));
+  if (received && h.status == 0)
+  {
+    points.resize(3 * static_cast<std::size_t>(h.points));
+    tets.resize(4 * static_cast<std::size_t>(h.tets));
+    received = readAll(fds[0], points.data(), sizeof(double) * points.size()) &&
+      readAll(fds[0], tets.data(), sizeof(int) * tets.size());
+  }
+  ::close(fds[0]);
+  int waitStatus = 0;
+  while (::waitpid(pid, &waitStatus, 0) < 0 && errno == EINTR)
+  {
+  }
+  if (!received)
+  {
+    if (WIFSIGNALED(waitStatus))
+    {
+      error = "TetGen failed and then crashed in its own clean-up (signal " +
+        std::to_string(WTERMSIG(waitStatus)) +
+        ", a defect of libtet 1.5), so its error code is lost; the usual causes are a very "
+        "small input feature or two very close facets";
+    }
+    else
+    {
+      error = "the TetGen process ended without sending a mesh";
+    }
+    status = 1;
+    code = 0;
+    return false;
+  }
+  status = h.status;
+  code = h.code;
+  return true;
+}
+} // namespace
+
+std::string describeTetGenError(int code)
+{
+  switch (code)
+  {
+    case 1: return "out of memory";
+    case 2: return "internal error in TetGen";
+    case 3: return "the surface intersects itself";
+    case 4: return "a very small input feature was detected (smaller than TetGen's tolerance)";
+    case 5: return "two very close input facets were detected";
+    case 10: return "invalid input (TetGen rejected the surface)";
+    default: return "unknown TetGen error";
+  }
+}
+
+TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOptions& options)
+{
+  TetMeshingResult r;
+  const std::size_t n = s.points.size();
+  if (s.triangles.size() < 4 || n < 4)
+  {
+    r.error = "the surface has fewer than 4 triangles or points";
+    return r;
+  }
+  if (!(options.radiusEdgeRatio > 1.0) || !(options.maximumVolume >= 0) ||
+    !(options.minimumDihedralAngle >= 0 && options.minimumDihedralAngle < 70))
+  {
+    r.error = "invalid options: the radius-edge ratio must exceed 1, the maximum volume must not "
+              "be negative, the minimum dihedral angle must lie in [0, 70) degrees";
+    return r;
+  }
+  if (!validExtraSwitches(options.extraSwitches))
+  {
+    r.error = "extra TetGen switches '" + options.extraSwitches +
+      "' refused: only O, S, T and V (with numbers) are allowed, since other switches could "
+      "add points on the subdomain surface, change the numbering or skip meshing";
+    return r;
+  }
+  for (const auto& p : s.points)
+  {
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      r.error = "a surface point has a NaN or infinite coordinate";
+      return r;
+    }
+  }
+  double edgeSum = 0;
+  for (const auto& t : s.triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      if (t[k] < 0 || t[k] >= static_cast<Index>(n))
+      {
+        r.error = "a triangle refers to a point that does not exist";
+        return r;
+      }
+      edgeSum += norm(s.points[t[(k + 1) % 3]] - s.points[t[k]]);
+    }
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] ||
+      !(norm(cross(s.points[t[1]] - s.points[t[0]], s.points[t[2]] - s.points[t[0]])) > 0))
+    {
+      r.error = "the surface has a degenerate (zero-area) triangle";
+      return r;
+    }
+  }
+  const double meanEdge = edgeSum / (3.0 * s.triangles.size());
+  const double volume =
+    options.maximumVolume > 0 ? options.maximumVolume : meanEdge * meanEdge * meanEdge / (6.0 * std::sqrt(2.0));
+
+  // TetGen's most common failure, found first with exact predicates and named precisely
+  const SelfIntersectionReport crossing = checkSelfIntersection(s);
+  if (crossing.checked && crossing.intersects)
+  {
+    r.tetgenCode = 3;
+    r.error = "the surface intersects itself (triangles " + std::to_string(crossing.firstTriangle) +
+      " and " + std::to_string(crossing.secondTriangle) + " cross): " + describeTetGenError(3);
+    return r;
+  }
+
+  // cavities: shells enclosing negative volume
+  std::vector<Vec3> holes;
+  for (const auto& shell : shells(s))
+  {
+    double v = 0;
+    const Vec3 o = s.points[s.triangles[shell.front()][0]];
+    for (Index t : shell)
+    {
+      const auto& tri = s.triangles[t];
+      v += dot(s.points[tri[0]] - o, cross(s.points[tri[1]] - o, s.points[tri[2]] - o));
+    }
+    if (v < 0)
+    {
+      Vec3 hole;
+      if (!holePoint(s, shell, hole))
+      {
+        r.error = "could not find a point inside a cavity of the surface";
+        return r;
+      }
+      holes.push_back(hole);
+    }
+  }
+
+  std::ostringstream switches;
+  switches.precision(17);
+  switches << "pYzQq" << options.radiusEdgeRatio;
+  if (options.minimumDihedralAngle > 0)
+  {
+    switches << "/" << options.minimumDihedralAngle;
+  }
+  switches << "a" << volume << options.extraSwitches;
+  r.switchesUsed = switches.str();
+
+  tetgenio in;
+  in.firstnumber = 0;
+  in.numberofpoints = static_cast<int>(n);
+  in.pointlist = new REAL[3 * n];
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      in.pointlist[3 * i + k] = s.points[i][k];
+    }
+  }
+  in.numberoffacets = static_cast<int>(s.triangles.size());
+  in.facetlist = new tetgenio::facet[s.triangles.size()];
+  for (std::size_t t = 0; t < s.triangles.size(); ++t)
+  {
+    tetgenio::facet& f = in.facetlist[t];
+    tetgenio::init(&f);
+    f.numberofpolygons = 1;
+    f.polygonlist = new tetgenio::polygon[1];
+    tetgenio::init(&f.polygonlist[0]);
+    f.polygonlist[0].numberofvertices = 3;
+    f.polygonlist[0].vertexlist = new int[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      f.polygonlist[0].vertexlist[k] = static_cast<int>(s.triangles[t][k]);
+    }
+  }
+  if (!holes.empty())
+  {
+    in.numberofholes = static_cast<int>(holes.size());
+    in.holelist = new REAL[3 * holes.size()];
+    for (std::size_t h = 0; h < holes.size(); ++h)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        in.holelist[3 * h + k] = holes[h][k];
+      }
+    }
+  }
+  std::vector<double> outPoints;
+  std::vector<int> outTets;
+  int status = 0, code = 0;
+  std::string failure;
+  if (!runTetGenIsolated(in, r.switchesUsed, outPoints, outTets, status, code, failure))
+  {
+    r.tetgenCode = code;
+    r.error = failure;
+    return r;
+  }
+  if (status == 1)
+  {
+    r.tetgenCode = code;
+    r.error = "TetGen failed with code " + std::to_string(code) + ": " + describeTetGenError(code);
+    return r;
+  }
+  if (status == 2)
+  {
+    r.tetgenCode = 1;
+    r.error = "TetGen ran out of memory";
+    return r;
+  }
+  if (status == 3)
+  {
+    r.error = "TetGen did not accept the switches '" + r.switchesUsed + "'";
+    return r;
+  }
+  const int outPointCount = static_cast<int>(outPoints.size() / 3);
+  const int outTetCount = static_cast<int>(outTets.size() / 4);
+
+  // Check and convert the result.
+  if (outPointCount < static_cast<int>(n))
+  {
+    r.error = "TetGen returned fewer points than the surface has";
+    return r;
+  }
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (std::memcmp(&outPoints[3 * i], s.points[i].data(), 3 * sizeof(double)) != 0)
+    {
+      r.error = "TetGen moved or reordered surface point " + std::to_string(i) +
+        " (the surface may have duplicate points)";
+      return r;
+    }
+  }
+  TetMesh& mesh = r.mesh;
+  mesh.points.resize(static_cast<std::size_t>(outPointCount));
+  for (int i = 0; i < outPointCount; ++i)
+  {
+    mesh.points[i] = { outPoints[3 * i], outPoints[3 * i + 1], outPoints[3 * i + 2] };
+  }
+  mesh.tets.resize(static_cast<std::size_t>(outTetCount));
+  std::vector<std::array<Index, 3>> faces;
+  faces.reserve(4 * static_cast<std::size_t>(outTetCount));
+  for (int t = 0; t < outTetCount; ++t)
+  {
+    std::array<Index, 4> v;
+    for (int k = 0; k < 4; ++k)
+    {
+      v[k] = outTets[4 * t + k];
+    }
+    const Vec3& a = mesh.points[v[0]];
+    if (dot(mesh.points[v[1]] - a, cross(mesh.points[v[2]] - a, mesh.points[v[3]] - a)) < 0)
+    {
+      std::swap(v[2], v[3]);
+    }
+    mesh.tets[t] = v;
+    static const int corners[4][3] = { { 0, 1, 2 }, { 0, 1, 3 }, { 0, 2, 3 }, { 1, 2, 3 } };
+    for (const auto& f : corners)
+    {
+      std::array<Index, 3> key{ v[f[0]], v[f[1]], v[f[2]] };
+      std::sort(key.begin(), key.end());
+      faces.push_back(key);
+    }
+  }
+  // faces used by one tetrahedron only must be exactly the input triangles
+  std::sort(faces.begin(), faces.end());
+  std::vector<std::array<Index, 3>> boundary;
+  for (std::size_t i = 0; i < faces.size();)
+  {
+    std::size_t j = i + 1;
+    while (j < faces.size() && faces[j] == faces[i])
+    {
+      ++j;
+    }
+    if (j - i == 1)
+    {
+      boundary.push_back(faces[i]);
+    }
+    i = j;
+  }
+  std::vector<std::array<Index, 3>> input;
+  for (const auto& t : s.triangles)
+  {
+    std::array<Index, 3> key{ t[0], t[1], t[2] };
+    std::sort(key.begin(), key.end());
+    input.push_back(key);
+  }
+  std::sort(input.begin(), input.end());
+  if (boundary != input)
+  {
+    r.error = "TetGen's mesh boundary differs from the input surface (" + std::to_string(boundary.size()) +
+      " boundary faces for " + std::to_string(input.size()) + " input triangles)";
+    return r;
+  }
+  r.ok = true;
+  return r;
+}
+} // namespace ptm

@@ -1,0 +1,49 @@
+#ifndef PTM_TETGEN_SUBDOMAIN_MESHER_H
+#define PTM_TETGEN_SUBDOMAIN_MESHER_H
+// Stage 4 of the method: the volume mesh of one closed subdomain surface by
+// TetGen (libtet), with the surface preserved exactly.
+//
+// Contract: the surface points come out first, in the same order and with
+// bit-identical coordinates, followed by TetGen's interior points; every
+// input triangle is the face of exactly one tetrahedron and the boundary of
+// the tetrahedra is exactly the input surface (switch Y: no Steiner point on
+// the boundary), so neighbouring subdomains meshed apart match node for node.
+// Shells with negative enclosed volume (cavities) get a hole point so TetGen
+// leaves them empty. TetGen's failures (it throws an int) become ok = false
+// with the code and its meaning. The same input and options give the same
+// mesh.
+#include "TriangleSurface.h"
+
+#include <string>
+
+namespace ptm
+{
+struct TetMeshingOptions
+{
+  double radiusEdgeRatio = 2.0;      // -q bound, > 1
+  double minimumDihedralAngle = 0.0; // second -q value in degrees; 0: TetGen's default
+  double maximumVolume = 0.0;        // -a; 0: regular tetrahedron of the mean surface edge
+  std::string extraSwitches;         // only O, S, T, V with numbers (what cannot break the contract)
+};
+
+struct TetMesh
+{
+  std::vector<Vec3> points;               // surface points first, then interior points
+  std::vector<std::array<Index, 4>> tets; // positive volume (VTK_TETRA order)
+};
+
+struct TetMeshingResult
+{
+  bool ok = false;
+  int tetgenCode = 0; // TetGen's exit code on failure, 0 otherwise
+  std::string error;
+  TetMesh mesh;
+  std::string switchesUsed;
+};
+
+TetMeshingResult meshClosedSurface(const TriangleSurface& surface, const TetMeshingOptions& options);
+
+// What TetGen 1.5's exit codes mean.
+std::string describeTetGenError(int code);
+} // namespace ptm
+#endif
