@@ -1,0 +1,25 @@
+#ifndef PTM_SURFACE_COMPLEX_ARRAYS_H
+#define PTM_SURFACE_COMPLEX_ARRAYS_H
+// Names of the arrays of the labeled surface complex as vtkPolyData (the
+// output of VolumeBalancedCutter, InterfaceTriangulator and SurfaceRelaxer).
+// README.md, section "The labeled surface complex", documents them.
+namespace ptm::arrays
+{
+// point data
+constexpr const char* GlobalPointIds = "GlobalPointIds"; // vtkIdType, set as the global ids
+// cell data
+constexpr const char* SubdomainPair = "SubdomainPair"; // int x2: normal points out of [0] into [1]
+constexpr const char* SourceFaceId = "SourceFaceId";   // vtkIdType: input triangle, -1 on interfaces
+constexpr const char* PlaneId = "PlaneId";             // int: cutting plane, -1 on the input surface
+// field data
+constexpr const char* CuttingPlanes = "CuttingPlanes";             // double x6 per plane: origin, normal
+constexpr const char* PlaneSubdomainCount = "PlaneSubdomainCount"; // int per plane: subdomains in the part it cut
+constexpr const char* NumberOfSubdomains = "NumberOfSubdomains";   // int
+constexpr const char* SubdomainRank = "SubdomainRank";             // int per subdomain: the rank that owns it
+constexpr const char* SubdomainVolume = "SubdomainVolume";         // double per subdomain
+constexpr const char* SubdomainMeasure = "SubdomainMeasure";       // double per subdomain, by the balance criterion
+constexpr const char* GlobalPointCount = "GlobalPointCount";       // vtkIdType: points of the whole complex
+constexpr const char* BalanceCriterionName = "BalanceCriterion";   // string
+constexpr const char* MaximumImbalance = "MaximumImbalance";       // double
+} // namespace ptm::arrays
+#endif

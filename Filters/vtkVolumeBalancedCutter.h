@@ -1,0 +1,111 @@
+/**
+ * @class vtkVolumeBalancedCutter
+ * @brief Splits a closed surface into subdomains of equal volume by cutting planes.
+ *
+ * Stage 1 of the parallel tetrahedral mesher. The input surface (any
+ * polygonal data, possibly spread over ranks; ParaView's readers put it all
+ * on rank 0) is gathered, merged and oriented, then cut by planes into
+ * NumberOfSubdomains subdomains of equal measure (see ptm::decomposeVolumeBalanced).
+ * Every rank computes the same decomposition; each rank outputs the labeled
+ * surface complex of the subdomains it owns: triangles with SubdomainPair and
+ * SourceFaceId, closed interface loops as poly-lines with SubdomainPair and
+ * PlaneId, GlobalPointIds, and the planes and subdomain facts as field data
+ * (SurfaceComplexArrays.h). Colour by SubdomainPair to see the partition.
+ *
+ * Collective: every rank must execute it. Failure on any rank (bad input,
+ * impossible request) is reported by all ranks from the same update.
+ */
+#ifndef vtkVolumeBalancedCutter_h
+#define vtkVolumeBalancedCutter_h
+
+#include "ParallelTetMesherFiltersModule.h"
+#include "vtkPolyDataAlgorithm.h"
+
+class vtkMultiProcessController;
+
+class PARALLELTETMESHERFILTERS_EXPORT vtkVolumeBalancedCutter : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkVolumeBalancedCutter* New();
+  vtkTypeMacro(vtkVolumeBalancedCutter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum StrategyType
+  {
+    PARALLEL_PLANES = 0,
+    RECURSIVE_BISECTION = 1
+  };
+  enum DirectionType
+  {
+    X = 0,
+    Y = 1,
+    Z = 2,
+    LONGEST_EXTENT = 3,
+    INERTIA = 4
+  };
+  enum BalanceCriterionType
+  {
+    VOLUME = 0,
+    BOUNDARY_FACETS = 1,
+    NODES = 2
+  };
+
+  ///@{
+  /// Number of subdomains K; 0 (default) means one per MPI rank. More than
+  /// the ranks is over-decomposition: subdomains are then assigned to ranks
+  /// so that each rank's total measure is balanced.
+  vtkSetClampMacro(NumberOfSubdomains, int, 0, 1000000);
+  vtkGetMacro(NumberOfSubdomains, int);
+  ///@}
+
+  ///@{
+  /// ParallelPlanes (0) or RecursiveBisection (1, default).
+  vtkSetClampMacro(Strategy, int, PARALLEL_PLANES, RECURSIVE_BISECTION);
+  vtkGetMacro(Strategy, int);
+  ///@}
+
+  ///@{
+  /// Plane normal: X, Y, Z, LongestExtent, or Inertia (default: the long
+  /// principal axis of the node inertia matrix, per part in recursive bisection).
+  vtkSetClampMacro(Direction, int, X, INERTIA);
+  vtkGetMacro(Direction, int);
+  ///@}
+
+  ///@{
+  /// What is balanced: Volume (default), BoundaryFacets or Nodes.
+  vtkSetClampMacro(BalanceCriterion, int, VOLUME, NODES);
+  vtkGetMacro(BalanceCriterion, int);
+  ///@}
+
+  ///@{
+  /// Allowed relative deviation of a subdomain from its target (default 0.01).
+  vtkSetClampMacro(BalanceTolerance, double, 1e-6, 0.5);
+  vtkGetMacro(BalanceTolerance, double);
+  ///@}
+
+  ///@{
+  /// The controller (default: the global one).
+  void SetController(vtkMultiProcessController*);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
+protected:
+  vtkVolumeBalancedCutter();
+  ~vtkVolumeBalancedCutter() override;
+
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int NumberOfSubdomains = 0;
+  int Strategy = RECURSIVE_BISECTION;
+  int Direction = INERTIA;
+  int BalanceCriterion = VOLUME;
+  double BalanceTolerance = 0.01;
+  vtkMultiProcessController* Controller = nullptr;
+
+private:
+  vtkVolumeBalancedCutter(const vtkVolumeBalancedCutter&) = delete;
+  void operator=(const vtkVolumeBalancedCutter&) = delete;
+};
+
+#endif
