@@ -1,0 +1,264 @@
+#include "vtkInterfaceTriangulator.h"
+
+#include "InterfaceTriangulation.h"
+#include "PolyDataConversion.h"
+#include "RankCollectives.h"
+#include "SurfaceComplexArrays.h"
+
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMultiProcessController.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <algorithm>
+#include <exception>
+#include <map>
+#include <sstream>
+#include <tuple>
+
+vtkStandardNewMacro(vtkInterfaceTriangulator);
+vtkCxxSetObjectMacro(vtkInterfaceTriangulator, Controller, vtkMultiProcessController);
+
+namespace
+{
+using RegionKey = std::tuple<long long, long long, long long>; // plane, pair[0], pair[1]
+
+struct RegionFigures
+{
+  long long newPoints = 0;
+  long long belowMinimumAngle = 0;
+  long long encroached = 0;
+  double minimumAngle = 180;
+};
+} // namespace
+
+vtkInterfaceTriangulator::vtkInterfaceTriangulator()
+{
+  this->SetController(vtkMultiProcessController::GetGlobalController());
+}
+
+vtkInterfaceTriangulator::~vtkInterfaceTriangulator()
+{
+  this->SetController(nullptr);
+}
+
+int vtkInterfaceTriangulator::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  outputVector->GetInformationObject(0)->Set(
+    vtkAlgorithm::CAN_HANDLE_PIECE_REQUEST(), 1);
+  return 1;
+}
+
+int vtkInterfaceTriangulator::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  vtkMultiProcessController* controller = this->Controller;
+  std::string message;
+
+  this->UpdateProgress(0.0);
+  this->SetProgressText("Reading the complex");
+  ptm::ComplexPiece piece;
+  std::string localError;
+  if (!ptm::complexFromPolyData(input, piece, localError))
+  {
+    localError = "InterfaceTriangulator: " + localError;
+  }
+  if (!ptm::agreeAllSucceeded(controller, localError.empty(), localError, message))
+  {
+    vtkErrorMacro(<< message);
+    output->Initialize();
+    return 0;
+  }
+
+  // Triangulate every region of this piece from canonically ordered input.
+  this->SetProgressText("Triangulating interfaces");
+  ptm::InterfaceTriangulationOptions options;
+  options.minimumAngleDegrees = this->MinimumAngle;
+  options.maximumEdgeLength = this->MaximumEdgeLength;
+  ptm::SurfaceComplex& c = piece.complex;
+  struct Done
+  {
+    RegionKey key;
+    std::vector<ptm::Index> pointOfLocal; // region point -> piece point
+    ptm::InterfaceTriangulation triangulation;
+    int planeId;
+    ptm::SubdomainPair pair;
+  };
+  std::vector<Done> done;
+  std::size_t regionIndex = 0;
+  for (const ptm::InterfaceRegion& region : c.interfaces)
+  {
+    Done d;
+    d.planeId = region.planeId;
+    d.pair = region.pair;
+    d.key = RegionKey(region.planeId, region.pair[0], region.pair[1]);
+    std::vector<ptm::Index> points;
+    for (const auto& e : region.edges)
+    {
+      points.push_back(e[0]);
+      points.push_back(e[1]);
+    }
+    std::sort(points.begin(), points.end(), [&](ptm::Index a, ptm::Index b) {
+      return piece.globalIds[a] < piece.globalIds[b];
+    });
+    points.erase(std::unique(points.begin(), points.end()), points.end());
+    std::map<ptm::Index, ptm::Index> localOf;
+    ptm::PlanarRegion planar;
+    planar.origin = c.planes[region.planeId].origin;
+    planar.normal = c.planes[region.planeId].normal;
+    for (ptm::Index p : points)
+    {
+      localOf[p] = static_cast<ptm::Index>(planar.points.size());
+      planar.points.push_back(c.points[p]);
+    }
+    for (const auto& e : region.edges)
+    {
+      planar.edges.push_back({ localOf[e[0]], localOf[e[1]] });
+    }
+    std::sort(planar.edges.begin(), planar.edges.end());
+    try
+    {
+      ptm::InterfaceTriangulationResult r = ptm::triangulateInterface(planar, options);
+      if (!r.ok)
+      {
+        std::ostringstream msg;
+        msg << "interface on plane " << region.planeId << " between subdomains " << region.pair[0]
+            << " and " << region.pair[1] << ": " << r.error;
+        localError = msg.str();
+        break;
+      }
+      d.triangulation = std::move(r.triangulation);
+    }
+    catch (const std::exception& e)
+    {
+      localError = std::string("interface triangulation failed: ") + e.what();
+      break;
+    }
+    d.pointOfLocal = points;
+    done.push_back(std::move(d));
+    this->UpdateProgress(0.1 + 0.7 * static_cast<double>(++regionIndex) / c.interfaces.size());
+  }
+  if (!ptm::agreeAllSucceeded(controller, localError.empty(), localError, message))
+  {
+    vtkErrorMacro("InterfaceTriangulator failed: " << message);
+    output->Initialize();
+    return 0;
+  }
+  if (ptm::agreeAnyAborted(controller, this->CheckAbort()))
+  {
+    output->Initialize();
+    return 1;
+  }
+
+  // Global ids of the new points: every rank learns every region's count.
+  std::vector<long long> mine;
+  for (const Done& d : done)
+  {
+    mine.push_back(std::get<0>(d.key));
+    mine.push_back(std::get<1>(d.key));
+    mine.push_back(std::get<2>(d.key));
+    mine.push_back(static_cast<long long>(d.triangulation.newPoints.size()));
+    mine.push_back(static_cast<long long>(d.triangulation.trianglesBelowMinimumAngle));
+    mine.push_back(static_cast<long long>(d.triangulation.encroachedSegmentsLeft));
+    mine.push_back(std::llround(d.triangulation.minimumAngleDegrees * 1e9));
+  }
+  const std::vector<long long> all = ptm::allGatherValues(controller, mine);
+  std::map<RegionKey, RegionFigures> regions;
+  for (std::size_t k = 0; k + 6 < all.size(); k += 7)
+  {
+    RegionFigures f;
+    f.newPoints = all[k + 3];
+    f.belowMinimumAngle = all[k + 4];
+    f.encroached = all[k + 5];
+    f.minimumAngle = static_cast<double>(all[k + 6]) * 1e-9;
+    regions[RegionKey(all[k], all[k + 1], all[k + 2])] = f;
+  }
+  std::map<RegionKey, long long> firstNewId;
+  long long next = piece.globalPointCount;
+  RegionFigures total;
+  for (const auto& [key, f] : regions)
+  {
+    firstNewId[key] = next;
+    next += f.newPoints;
+    total.newPoints += f.newPoints;
+    total.belowMinimumAngle += f.belowMinimumAngle;
+    total.encroached += f.encroached;
+    total.minimumAngle = std::min(total.minimumAngle, f.minimumAngle);
+  }
+
+  // The complex with interface triangles instead of loops.
+  if (c.trianglePlanes.size() != c.triangles.size())
+  {
+    c.trianglePlanes.assign(c.triangles.size(), -1);
+  }
+  for (const Done& d : done)
+  {
+    const ptm::InterfaceTriangulation& t = d.triangulation;
+    const std::size_t boundaryCount = d.pointOfLocal.size();
+    std::vector<ptm::Index> pointOf = d.pointOfLocal;
+    long long id = firstNewId.at(d.key);
+    for (const ptm::Vec3& p : t.newPoints)
+    {
+      pointOf.push_back(static_cast<ptm::Index>(c.points.size()));
+      c.points.push_back(p);
+      piece.globalIds.push_back(id++);
+    }
+    for (const ptm::Triangle& tri : t.triangles)
+    {
+      c.triangles.push_back({ pointOf[tri[0]], pointOf[tri[1]], pointOf[tri[2]] });
+      c.trianglePairs.push_back(d.pair);
+      c.sourceFaces.push_back(-1);
+      c.trianglePlanes.push_back(d.planeId);
+    }
+    (void)boundaryCount;
+  }
+  c.interfaces.clear();
+  piece.globalPointCount = next;
+
+  this->SetProgressText("Writing the complex");
+  ptm::complexToPolyData(piece, {}, output);
+  vtkFieldData* fd = output->GetFieldData();
+  auto addCount = [&](const char* name, long long value) {
+    vtkNew<vtkIdTypeArray> a;
+    a->SetName(name);
+    a->InsertNextValue(value);
+    fd->AddArray(a);
+  };
+  addCount("InterfaceNewPoints", total.newPoints);
+  addCount("InterfaceTrianglesBelowMinimumAngle", total.belowMinimumAngle);
+  addCount("EncroachedBoundarySegments", total.encroached);
+  vtkNew<vtkDoubleArray> angle;
+  angle->SetName("InterfaceMinimumAngle");
+  angle->InsertNextValue(regions.empty() ? 0.0 : total.minimumAngle);
+  fd->AddArray(angle);
+  // carry the cutter's own facts through
+  if (input)
+  {
+    for (const char* name : { ptm::arrays::BalanceCriterionName, ptm::arrays::MaximumImbalance })
+    {
+      if (vtkAbstractArray* a = input->GetFieldData()->GetAbstractArray(name))
+      {
+        fd->AddArray(a);
+      }
+    }
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkInterfaceTriangulator::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "MinimumAngle: " << this->MinimumAngle << "\n";
+  os << indent << "MaximumEdgeLength: " << this->MaximumEdgeLength << "\n";
+  os << indent << "Controller: " << this->Controller << "\n";
+}

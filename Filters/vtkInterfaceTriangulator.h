@@ -1,0 +1,71 @@
+/**
+ * @class vtkInterfaceTriangulator
+ * @brief Fills every interface loop of the labeled complex with a quality 2D constrained Delaunay triangulation.
+ *
+ * Stage 2 of the parallel tetrahedral mesher. Input: the labeled surface
+ * complex from vtkVolumeBalancedCutter. Every interface region (the loops of
+ * one plane between one pair of subdomains) is triangulated in its plane with
+ * CGAL's constrained Delaunay triangulation and refined inside only (no point
+ * is ever added on a loop, which is shared with surface triangles), with a
+ * minimum angle and a maximum edge length. A rank triangulates the regions of
+ * its own subdomains from canonically ordered input, so two ranks sharing an
+ * interface produce bit-identical triangles; the new points get global ids
+ * after the complex's points, region by region in (plane, pair) order, which
+ * does not depend on the number of ranks.
+ *
+ * Output: the same complex with the loops replaced by interface triangles
+ * (SubdomainPair oriented out of the first subdomain, SourceFaceId -1,
+ * PlaneId of the plane); field data adds InterfaceTrianglesBelowMinimumAngle,
+ * EncroachedBoundarySegments, InterfaceMinimumAngle and InterfaceNewPoints.
+ * Collective: every rank must execute it; a failure anywhere fails all.
+ */
+#ifndef vtkInterfaceTriangulator_h
+#define vtkInterfaceTriangulator_h
+
+#include "ParallelTetMesherFiltersModule.h"
+#include "vtkPolyDataAlgorithm.h"
+
+class vtkMultiProcessController;
+
+class PARALLELTETMESHERFILTERS_EXPORT vtkInterfaceTriangulator : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkInterfaceTriangulator* New();
+  vtkTypeMacro(vtkInterfaceTriangulator, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// Smallest angle allowed in an interface triangle, in degrees (default
+  /// 20.7, the bound with guaranteed termination; up to about 30 works).
+  vtkSetClampMacro(MinimumAngle, double, 1.0, 34.0);
+  vtkGetMacro(MinimumAngle, double);
+  ///@}
+
+  ///@{
+  /// Longest edge allowed; 0 (default) derives it from the spacing of the
+  /// loop's own points, so interface triangles match the surface resolution
+  /// and grade smoothly inward.
+  vtkSetClampMacro(MaximumEdgeLength, double, 0.0, 1e300);
+  vtkGetMacro(MaximumEdgeLength, double);
+  ///@}
+
+  void SetController(vtkMultiProcessController*);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+
+protected:
+  vtkInterfaceTriangulator();
+  ~vtkInterfaceTriangulator() override;
+
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double MinimumAngle = 20.7;
+  double MaximumEdgeLength = 0.0;
+  vtkMultiProcessController* Controller = nullptr;
+
+private:
+  vtkInterfaceTriangulator(const vtkInterfaceTriangulator&) = delete;
+  void operator=(const vtkInterfaceTriangulator&) = delete;
+};
+
+#endif

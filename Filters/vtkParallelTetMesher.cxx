@@ -1,0 +1,335 @@
+#include "vtkParallelTetMesher.h"
+
+#include "GlobalMeshNumbering.h"
+#include "PolyDataConversion.h"
+#include "RankCollectives.h"
+#include "SubdomainSurface.h"
+#include "SurfaceComplexArrays.h"
+#include "TetGenSubdomainMesher.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkMultiProcessController.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <chrono>
+#include <exception>
+#include <limits>
+#include <new>
+#include <sstream>
+#include <unordered_map>
+
+vtkStandardNewMacro(vtkParallelTetMesher);
+vtkCxxSetObjectMacro(vtkParallelTetMesher, Controller, vtkMultiProcessController);
+
+vtkParallelTetMesher::vtkParallelTetMesher()
+{
+  this->SetNumberOfOutputPorts(2);
+  this->SetController(vtkMultiProcessController::GetGlobalController());
+}
+
+vtkParallelTetMesher::~vtkParallelTetMesher()
+{
+  this->SetController(nullptr);
+}
+
+int vtkParallelTetMesher::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+int vtkParallelTetMesher::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 0 ? "vtkUnstructuredGrid" : "vtkPolyData");
+  return 1;
+}
+
+int vtkParallelTetMesher::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  for (int port = 0; port < 2; ++port)
+  {
+    outputVector->GetInformationObject(port)->Set(
+      vtkAlgorithm::CAN_HANDLE_PIECE_REQUEST(), 1);
+  }
+  return 1;
+}
+
+int vtkParallelTetMesher::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
+  vtkPolyData* boundary = vtkPolyData::GetData(outputVector, 1);
+  vtkMultiProcessController* controller = this->Controller;
+  const int rank = ptm::rankOf(controller);
+  std::string message, localError;
+  auto fail = [&](const std::string& text) {
+    vtkErrorMacro("ParallelTetMesher failed: " << text);
+    output->Initialize();
+    boundary->Initialize();
+    return 0;
+  };
+
+  this->UpdateProgress(0.0);
+  this->SetProgressText("Extracting subdomain surfaces");
+  ptm::ComplexPiece piece;
+  if (!ptm::complexFromPolyData(input, piece, localError))
+  {
+    localError = "ParallelTetMesher: " + localError;
+  }
+  if (!ptm::agreeAllSucceeded(controller, localError.empty(), localError, message))
+  {
+    return fail(message);
+  }
+  const int K = piece.complex.subdomainCount;
+  std::vector<int> mine;
+  for (int s = 0; s < K; ++s)
+  {
+    if (piece.subdomainRank[s] == rank)
+    {
+      mine.push_back(s);
+    }
+  }
+
+  // Independent meshing of every owned subdomain.
+  ptm::TetMeshingOptions options;
+  options.radiusEdgeRatio = this->RadiusEdgeRatio;
+  options.maximumVolume = this->MaximumVolume;
+  options.minimumDihedralAngle = this->MinimumDihedralAngle;
+  options.extraSwitches = this->ExtraSwitches;
+  std::vector<ptm::SubdomainSurface> surfaces(mine.size());
+  std::vector<ptm::TetMesh> meshes(mine.size());
+  std::vector<double> seconds(mine.size(), 0.0);
+  for (std::size_t k = 0; k < mine.size() && localError.empty(); ++k)
+  {
+    const int s = mine[k];
+    std::ostringstream where;
+    where << "subdomain " << s << ": ";
+    if (!ptm::extractSubdomainSurface(piece.complex, piece.globalIds, s, surfaces[k], localError))
+    {
+      break;
+    }
+    this->SetProgressText(("Meshing " + where.str()).c_str());
+    const auto start = std::chrono::steady_clock::now();
+    try
+    {
+      ptm::TetMeshingResult r = ptm::meshClosedSurface(surfaces[k].surface, options);
+      if (!r.ok)
+      {
+        localError = where.str() + r.error;
+        break;
+      }
+      meshes[k] = std::move(r.mesh);
+    }
+    catch (const std::bad_alloc&)
+    {
+      localError = where.str() + "out of memory while meshing";
+      break;
+    }
+    catch (const std::exception& e)
+    {
+      localError = where.str() + e.what();
+      break;
+    }
+    seconds[k] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    this->UpdateProgress(0.05 + 0.8 * static_cast<double>(k + 1) / mine.size());
+  }
+  if (!ptm::agreeAllSucceeded(controller, localError.empty(), localError, message))
+  {
+    return fail(message);
+  }
+  if (ptm::agreeAnyAborted(controller, this->CheckAbort()))
+  {
+    output->Initialize();
+    boundary->Initialize();
+    return 1;
+  }
+
+  // Global numbering from every subdomain's counts.
+  this->SetProgressText("Numbering");
+  std::vector<long long> counts;
+  for (std::size_t k = 0; k < mine.size(); ++k)
+  {
+    counts.push_back(mine[k]);
+    counts.push_back(static_cast<long long>(meshes[k].points.size() - surfaces[k].surface.points.size()));
+    counts.push_back(static_cast<long long>(meshes[k].tets.size()));
+  }
+  const std::vector<long long> allCounts = ptm::allGatherValues(controller, counts);
+  std::vector<long long> interior(K, 0), tets(K, 0);
+  for (std::size_t k = 0; k + 2 < allCounts.size(); k += 3)
+  {
+    interior[allCounts[k]] = allCounts[k + 1];
+    tets[allCounts[k]] = allCounts[k + 2];
+  }
+  const ptm::GlobalMeshOffsets offsets =
+    ptm::globalMeshOffsets(piece.globalPointCount, interior, tets);
+
+  // Owner of every surface point: the rank of the lowest subdomain touching it.
+  std::vector<long long> lowest(static_cast<std::size_t>(piece.globalPointCount),
+    std::numeric_limits<long long>::max());
+  for (std::size_t k = 0; k < mine.size(); ++k)
+  {
+    for (ptm::Index g : surfaces[k].globalIds)
+    {
+      lowest[g] = std::min<long long>(lowest[g], mine[k]);
+    }
+  }
+  ptm::allReduceMin(controller, lowest);
+
+  // Assemble this rank's piece.
+  this->SetProgressText("Assembling");
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkIdTypeArray> pointIds;
+  pointIds->SetName("GlobalPointIds");
+  vtkNew<vtkUnsignedCharArray> ghosts;
+  ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  std::unordered_map<long long, vtkIdType> localOf;
+  auto addPoint = [&](long long gid, const ptm::Vec3& x, int owner) {
+    auto it = localOf.find(gid);
+    if (it != localOf.end())
+    {
+      return it->second;
+    }
+    const vtkIdType id = points->InsertNextPoint(x.data());
+    pointIds->InsertNextValue(gid);
+    ghosts->InsertNextValue(owner == rank ? 0 : vtkDataSetAttributes::DUPLICATEPOINT);
+    localOf.emplace(gid, id);
+    return id;
+  };
+  vtkNew<vtkCellArray> cells;
+  vtkNew<vtkIdTypeArray> cellIds;
+  cellIds->SetName("GlobalCellIds");
+  vtkNew<vtkIntArray> subdomainIds;
+  subdomainIds->SetName("SubdomainId");
+  vtkNew<vtkIntArray> ranks;
+  ranks->SetName("Rank");
+  vtkNew<vtkPoints> boundaryPoints;
+  boundaryPoints->SetDataTypeToDouble();
+  vtkNew<vtkIdTypeArray> boundaryPointIds;
+  boundaryPointIds->SetName("GlobalPointIds");
+  std::unordered_map<long long, vtkIdType> boundaryLocalOf;
+  vtkNew<vtkCellArray> boundaryCells;
+  vtkNew<vtkIdTypeArray> boundarySources;
+  boundarySources->SetName(ptm::arrays::SourceFaceId);
+  vtkNew<vtkIntArray> boundarySubdomains;
+  boundarySubdomains->SetName("SubdomainId");
+  for (std::size_t k = 0; k < mine.size(); ++k)
+  {
+    const int s = mine[k];
+    const ptm::SubdomainSurface& surface = surfaces[k];
+    const ptm::TetMesh& mesh = meshes[k];
+    const std::size_t nSurface = surface.surface.points.size();
+    std::vector<vtkIdType> local(mesh.points.size());
+    for (std::size_t i = 0; i < mesh.points.size(); ++i)
+    {
+      const bool onSurface = i < nSurface;
+      const long long gid = onSurface ? surface.globalIds[i]
+                                      : offsets.firstInteriorPoint[s] + static_cast<long long>(i - nSurface);
+      const int owner = onSurface ? ptm::owningRank(static_cast<int>(lowest[gid]), piece.subdomainRank) : rank;
+      local[i] = addPoint(gid, mesh.points[i], owner);
+    }
+    for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+    {
+      const vtkIdType ids[4] = { local[mesh.tets[t][0]], local[mesh.tets[t][1]],
+        local[mesh.tets[t][2]], local[mesh.tets[t][3]] };
+      cells->InsertNextCell(4, ids);
+      cellIds->InsertNextValue(offsets.firstTetrahedron[s] + static_cast<long long>(t));
+      subdomainIds->InsertNextValue(s);
+      ranks->InsertNextValue(rank);
+    }
+    for (std::size_t t = 0; t < surface.surface.triangles.size(); ++t)
+    {
+      if (surface.otherSide[t] >= 0)
+      {
+        continue;
+      }
+      vtkIdType ids[3];
+      for (int c = 0; c < 3; ++c)
+      {
+        const ptm::Index p = surface.surface.triangles[t][c];
+        const long long gid = surface.globalIds[p];
+        auto it = boundaryLocalOf.find(gid);
+        if (it == boundaryLocalOf.end())
+        {
+          it = boundaryLocalOf.emplace(gid, boundaryPoints->InsertNextPoint(surface.surface.points[p].data())).first;
+          boundaryPointIds->InsertNextValue(gid);
+        }
+        ids[c] = it->second;
+      }
+      boundaryCells->InsertNextCell(3, ids);
+      boundarySources->InsertNextValue(surface.sourceFaces[t]);
+      boundarySubdomains->InsertNextValue(s);
+    }
+  }
+  output->Initialize();
+  output->SetPoints(points);
+  output->SetCells(VTK_TETRA, cells);
+  output->GetPointData()->SetGlobalIds(pointIds);
+  output->GetPointData()->AddArray(ghosts);
+  output->GetCellData()->SetGlobalIds(cellIds);
+  output->GetCellData()->AddArray(subdomainIds);
+  output->GetCellData()->AddArray(ranks);
+  output->GetCellData()->SetActiveScalars("SubdomainId");
+  vtkFieldData* fd = output->GetFieldData();
+  auto addCount = [&](vtkFieldData* to, const char* name, long long value) {
+    vtkNew<vtkIdTypeArray> a;
+    a->SetName(name);
+    a->InsertNextValue(value);
+    to->AddArray(a);
+  };
+  addCount(fd, ptm::arrays::NumberOfSubdomains, K);
+  addCount(fd, "GlobalPointCount", offsets.pointCount);
+  addCount(fd, "GlobalCellCount", offsets.tetrahedronCount);
+  vtkNew<vtkIdTypeArray> perSubdomain;
+  perSubdomain->SetName("SubdomainTetrahedra");
+  for (long long t : tets)
+  {
+    perSubdomain->InsertNextValue(t);
+  }
+  fd->AddArray(perSubdomain);
+  vtkNew<vtkDoubleArray> times;
+  times->SetName("RankMeshingSeconds");
+  double total = 0;
+  for (double t : seconds)
+  {
+    total += t;
+  }
+  times->InsertNextValue(total);
+  fd->AddArray(times);
+
+  boundary->Initialize();
+  boundary->SetPoints(boundaryPoints);
+  boundary->SetPolys(boundaryCells);
+  boundary->GetPointData()->SetGlobalIds(boundaryPointIds);
+  boundary->GetCellData()->AddArray(boundarySources);
+  boundary->GetCellData()->AddArray(boundarySubdomains);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkParallelTetMesher::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "RadiusEdgeRatio: " << this->RadiusEdgeRatio << "\n";
+  os << indent << "MaximumVolume: " << this->MaximumVolume << "\n";
+  os << indent << "MinimumDihedralAngle: " << this->MinimumDihedralAngle << "\n";
+  os << indent << "ExtraSwitches: " << this->ExtraSwitches << "\n";
+}

@@ -1,0 +1,92 @@
+/**
+ * @class vtkParallelTetMesher
+ * @brief Meshes every subdomain of the labeled complex with TetGen, concurrently on all ranks, into one conforming mesh with global ids.
+ *
+ * Stage 4 of the parallel tetrahedral mesher. Each rank extracts the closed
+ * surface of every subdomain it owns (canonical form, see
+ * ptm::extractSubdomainSurface) and meshes it with TetGen (libtet) with the
+ * surface preserved exactly (-pY: no Steiner point on any subdomain surface),
+ * so neighbouring pieces match node for node across interfaces. Ranks mesh
+ * independently; only the counts are exchanged afterwards for the global
+ * numbering, which follows subdomain order and so does not depend on the
+ * number of ranks.
+ *
+ * Output port 0, vtkUnstructuredGrid with the rank's linear tetrahedra (a point
+ * shared by two subdomains on this rank appears once):
+ *  - point data: GlobalPointIds (vtkIdType, the global ids, 0..P-1 over the
+ *    whole mesh); vtkGhostType with DUPLICATEPOINT on copies of points owned
+ *    by another rank (owner: the rank of the lowest subdomain touching it);
+ *  - cell data: GlobalCellIds (the global ids, 0..T-1), SubdomainId, Rank;
+ *  - field data: NumberOfSubdomains, GlobalPointCount, GlobalCellCount.
+ * Output port 1, vtkPolyData: the outer boundary triangles of the rank's
+ * subdomains with GlobalPointIds, SourceFaceId (the input triangle) and
+ * SubdomainId, for boundary conditions.
+ * Collective; a TetGen failure in any subdomain fails every rank with a
+ * message naming the subdomain and TetGen's code.
+ */
+#ifndef vtkParallelTetMesher_h
+#define vtkParallelTetMesher_h
+
+#include "ParallelTetMesherFiltersModule.h"
+#include "vtkUnstructuredGridAlgorithm.h"
+
+#include <string>
+
+class vtkMultiProcessController;
+
+class PARALLELTETMESHERFILTERS_EXPORT vtkParallelTetMesher : public vtkUnstructuredGridAlgorithm
+{
+public:
+  static vtkParallelTetMesher* New();
+  vtkTypeMacro(vtkParallelTetMesher, vtkUnstructuredGridAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// TetGen's radius-edge ratio bound (-q), default 2.0; must exceed 1.
+  vtkSetClampMacro(RadiusEdgeRatio, double, 1.0, 100.0);
+  vtkGetMacro(RadiusEdgeRatio, double);
+  ///@}
+
+  ///@{
+  /// Largest tetrahedron volume (-a); 0 (default) = automatic: the volume of a
+  /// regular tetrahedron whose edge is the mean edge length of the subdomain's surface.
+  vtkSetClampMacro(MaximumVolume, double, 0.0, 1e300);
+  vtkGetMacro(MaximumVolume, double);
+  ///@}
+
+  ///@{
+  /// Smallest dihedral angle TetGen should aim for (degrees, -q ratio/angle); 0 = TetGen's default.
+  vtkSetClampMacro(MinimumDihedralAngle, double, 0.0, 30.0);
+  vtkGetMacro(MinimumDihedralAngle, double);
+  ///@}
+
+  ///@{
+  /// Extra TetGen switches for experts (validated: nothing that breaks the surface contract).
+  vtkSetMacro(ExtraSwitches, std::string);
+  vtkGetMacro(ExtraSwitches, std::string);
+  ///@}
+
+  void SetController(vtkMultiProcessController*);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+
+protected:
+  vtkParallelTetMesher();
+  ~vtkParallelTetMesher() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double RadiusEdgeRatio = 2.0;
+  double MaximumVolume = 0.0;
+  double MinimumDihedralAngle = 0.0;
+  std::string ExtraSwitches;
+  vtkMultiProcessController* Controller = nullptr;
+
+private:
+  vtkParallelTetMesher(const vtkParallelTetMesher&) = delete;
+  void operator=(const vtkParallelTetMesher&) = delete;
+};
+
+#endif

@@ -1,0 +1,163 @@
+#include "vtkSurfaceRelaxer.h"
+
+#include "ComplexGather.h"
+#include "PolyDataConversion.h"
+#include "RankCollectives.h"
+#include "SurfaceComplexArrays.h"
+#include "SurfaceRelaxation.h"
+
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMultiProcessController.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <exception>
+
+vtkStandardNewMacro(vtkSurfaceRelaxer);
+vtkCxxSetObjectMacro(vtkSurfaceRelaxer, Controller, vtkMultiProcessController);
+
+vtkSurfaceRelaxer::vtkSurfaceRelaxer()
+{
+  this->SetController(vtkMultiProcessController::GetGlobalController());
+}
+
+vtkSurfaceRelaxer::~vtkSurfaceRelaxer()
+{
+  this->SetController(nullptr);
+}
+
+int vtkSurfaceRelaxer::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  outputVector->GetInformationObject(0)->Set(
+    vtkAlgorithm::CAN_HANDLE_PIECE_REQUEST(), 1);
+  return 1;
+}
+
+int vtkSurfaceRelaxer::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  vtkMultiProcessController* controller = this->Controller;
+  const int rank = ptm::rankOf(controller);
+  std::string message, localError;
+
+  this->UpdateProgress(0.0);
+  this->SetProgressText("Gathering the complex");
+  ptm::ComplexPiece piece;
+  if (!ptm::complexFromPolyData(input, piece, localError))
+  {
+    localError = "SurfaceRelaxer: " + localError;
+  }
+  if (!ptm::agreeAllSucceeded(controller, localError.empty(), localError, message))
+  {
+    vtkErrorMacro(<< message);
+    output->Initialize();
+    return 0;
+  }
+  ptm::ComplexPiece whole;
+  if (!ptm::allGatherComplex(controller, piece, whole, localError))
+  {
+    localError = "SurfaceRelaxer: " + localError;
+  }
+  if (!ptm::agreeAllSucceeded(controller, localError.empty(), localError, message))
+  {
+    vtkErrorMacro(<< message);
+    output->Initialize();
+    return 0;
+  }
+  if (ptm::agreeAnyAborted(controller, this->CheckAbort()))
+  {
+    output->Initialize();
+    return 1;
+  }
+  this->UpdateProgress(0.2);
+  this->SetProgressText("Relaxing");
+
+  ptm::RelaxationOptions options;
+  options.iterations = this->NumberOfIterations;
+  options.relaxationFactor = this->RelaxationFactor;
+  options.featureAngleDegrees = this->FeatureAngle;
+  options.nearCutsOnly = this->Region == NEAR_CUTS;
+  ptm::RelaxationResult result;
+  try
+  {
+    result = ptm::relaxSurfaceComplex(whole.complex, options);
+    localError = result.ok ? "" : "SurfaceRelaxer: " + result.error;
+  }
+  catch (const std::exception& e)
+  {
+    localError = std::string("SurfaceRelaxer: unexpected failure: ") + e.what();
+  }
+  if (!ptm::agreeAllSucceeded(controller, localError.empty(), localError, message))
+  {
+    vtkErrorMacro(<< message);
+    output->Initialize();
+    return 0;
+  }
+  if (ptm::agreeAnyAborted(controller, this->CheckAbort()))
+  {
+    output->Initialize();
+    return 1;
+  }
+  this->UpdateProgress(0.9);
+  this->SetProgressText("Writing the complex");
+
+  std::vector<int> mine;
+  for (int s = 0; s < whole.complex.subdomainCount; ++s)
+  {
+    if (whole.subdomainRank[s] == rank)
+    {
+      mine.push_back(s);
+    }
+  }
+  if (mine.empty())
+  {
+    mine.push_back(-1);
+  }
+  ptm::complexToPolyData(whole, mine, output);
+  vtkFieldData* fd = output->GetFieldData();
+  auto addValue = [&](const char* name, double value) {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(name);
+    a->InsertNextValue(value);
+    fd->AddArray(a);
+  };
+  addValue("MinimumAngleBefore", result.before.minimumAngleDegrees);
+  addValue("MinimumAngleAfter", result.after.minimumAngleDegrees);
+  addValue("ShareBelow10DegreesBefore", result.before.shareBelow10Degrees);
+  addValue("ShareBelow10DegreesAfter", result.after.shareBelow10Degrees);
+  addValue("ShareBelow20DegreesBefore", result.before.shareBelow20Degrees);
+  addValue("ShareBelow20DegreesAfter", result.after.shareBelow20Degrees);
+  addValue("MovedNodeCount", static_cast<double>(result.acceptedMoves));
+  if (input)
+  {
+    for (const char* name : { "InterfaceNewPoints", "InterfaceTrianglesBelowMinimumAngle",
+           "EncroachedBoundarySegments", "InterfaceMinimumAngle",
+           ptm::arrays::BalanceCriterionName, ptm::arrays::MaximumImbalance })
+    {
+      if (vtkAbstractArray* a = input->GetFieldData()->GetAbstractArray(name))
+      {
+        fd->AddArray(a);
+      }
+    }
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkSurfaceRelaxer::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfIterations: " << this->NumberOfIterations << "\n";
+  os << indent << "RelaxationFactor: " << this->RelaxationFactor << "\n";
+  os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
+  os << indent << "Region: " << this->Region << "\n";
+}
