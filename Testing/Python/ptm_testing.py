@@ -1,0 +1,97 @@
+"""Helpers shared by the pvbatch tests: rank facts, agreement across ranks,
+and plain numpy checks that do not rely on the plugin's own code."""
+import os
+import sys
+import traceback
+
+from vtkmodules.vtkParallelCore import vtkMultiProcessController
+from vtkmodules.vtkCommonCore import vtkIntArray
+
+PLUGIN = os.environ["PTM_PLUGIN"]
+DATA = os.environ["PTM_DATA"]
+OUTPUT = os.environ.get("PTM_OUTPUT", ".")
+
+
+def controller():
+    return vtkMultiProcessController.GetGlobalController()
+
+
+def rank():
+    c = controller()
+    return c.GetLocalProcessId() if c else 0
+
+
+def size():
+    c = controller()
+    return c.GetNumberOfProcesses() if c else 1
+
+
+def all_ranks_true(ok):
+    """True on every rank if ok is true on every rank (collective)."""
+    c = controller()
+    if c is None or c.GetNumberOfProcesses() == 1:
+        return bool(ok)
+    send, receive = vtkIntArray(), vtkIntArray()
+    send.InsertNextValue(1 if ok else 0)
+    c.AllReduce(send, receive, 1)  # 1 = MIN_OP
+    return receive.GetValue(0) == 1
+
+
+def all_ranks_sum(value):
+    """Sum of an integer over all ranks (collective)."""
+    c = controller()
+    if c is None or c.GetNumberOfProcesses() == 1:
+        return int(value)
+    send, receive = vtkIntArray(), vtkIntArray()
+    send.InsertNextValue(int(value))
+    c.AllReduce(send, receive, 2)  # 2 = SUM_OP
+    return receive.GetValue(0)
+
+
+def barrier():
+    c = controller()
+    if c is not None and c.GetNumberOfProcesses() > 1:
+        c.Barrier()
+
+
+def load_plugin():
+    from paraview import simple
+    # without ns the new proxies become functions of paraview.simple itself
+    simple.LoadPlugin(PLUGIN, remote=False)
+
+
+def run_checks(main):
+    """Runs main() on every rank; every rank fails if any rank failed."""
+    ok = True
+    try:
+        main()
+    except Exception:
+        traceback.print_exc()
+        sys.stdout.flush()
+        ok = False
+    ok = all_ranks_true(ok)
+    print("rank %d of %d: %s" % (rank(), size(), "passed" if ok else "FAILED"))
+    sys.stdout.flush()
+    if not ok:
+        sys.exit(1)
+
+
+class ErrorCatcher:
+    """Collects the messages of ErrorEvents of a VTK object."""
+
+    def __init__(self, vtk_object):
+        from vtkmodules.util.misc import calldata_type
+        from vtkmodules.vtkCommonCore import VTK_STRING
+
+        self.messages = []
+
+        @calldata_type(VTK_STRING)
+        def on_error(caller, event, message):
+            self.messages.append(str(message))
+
+        self._callback = on_error  # keep it alive
+        vtk_object.AddObserver("ErrorEvent", on_error)
+
+    @property
+    def text(self):
+        return "\n".join(self.messages)

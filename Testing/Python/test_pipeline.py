@@ -1,0 +1,118 @@
+"""The four filters on every bundled surface, several K, both strategies:
+the labeled complex and the volume mesh are checked independently of the
+plugin's code (mesh_checks.py), and a canonical digest of every result is
+saved so that compare_pipeline_runs.py can prove 1 and 2 ranks agree."""
+import json
+import os
+import sys
+
+import numpy as np
+import ptm_testing as t
+from mesh_checks import (check_complex, check_volume_mesh, enclosed_volume,
+                         subdomain_surfaces_closed)
+from paraview import simple
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOXML import vtkXMLPPolyDataReader, vtkXMLPUnstructuredGridReader
+
+# (surface, K, strategy, direction)
+CASES = [
+    ("ball.stl", 2, "RecursiveBisection", "Inertia"),
+    ("ball.stl", 7, "RecursiveBisection", "Inertia"),
+    ("ball.off", 4, "ParallelPlanes", "X"),
+    ("torus.stl", 4, "ParallelPlanes", "X"),
+    ("torus.stl", 3, "RecursiveBisection", "Inertia"),
+    ("box_with_cavity.stl", 4, "RecursiveBisection", "LongestExtent"),
+    ("box_with_cavity.stl", 2, "ParallelPlanes", "Z"),
+    ("two_bodies.stl", 4, "RecursiveBisection", "Inertia"),
+    ("bracket.stl", 7, "ParallelPlanes", "LongestExtent"),
+    ("bracket.stl", 4, "RecursiveBisection", "Inertia"),
+]
+
+
+def read_all(reader_class, path):
+    reader = reader_class()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput()
+
+
+def main():
+    t.load_plugin()
+    ranks = int(sys.argv[1])
+    assert ranks == t.size(), "run with as many ranks as the first argument says"
+    out_dir = os.path.join(t.OUTPUT, "pipeline_np%d" % ranks)
+    if t.rank() == 0:
+        os.makedirs(out_dir, exist_ok=True)
+    t.barrier()
+    summary = {}
+    for surface, K, strategy, direction in CASES:
+        name = "%s_K%d_%s_%s" % (os.path.splitext(surface)[0] + os.path.splitext(surface)[1][1:], K, strategy, direction)
+        reader = simple.OpenDataFile(os.path.join(t.DATA, surface))
+        cutter = simple.VolumeBalancedCutter(Input=reader, NumberOfSubdomains=K,
+                                             Strategy=strategy, Direction=direction)
+        interfaces = simple.InterfaceTriangulator(Input=cutter)
+        relaxed = simple.SurfaceRelaxer(Input=interfaces)
+        mesher = simple.ParallelTetMesher(Input=relaxed)
+        base = os.path.join(out_dir, name)
+        simple.SaveData(base + "_complex.pvtp", proxy=interfaces)
+        simple.SaveData(base + "_relaxed.pvtp", proxy=relaxed)
+        simple.SaveData(base + "_mesh.pvtu", proxy=simple.OutputPort(mesher, 0))
+        simple.SaveData(base + "_boundary.pvtp", proxy=simple.OutputPort(mesher, 1))
+        t.barrier()
+        if t.rank() == 0:
+            summary[name] = check_case(base, K)
+            print(name, summary[name])
+            sys.stdout.flush()
+        for proxy in (mesher, relaxed, interfaces, cutter, reader):
+            simple.Delete(proxy)
+    if t.rank() == 0:
+        with open(os.path.join(out_dir, "summary.json"), "w") as f:
+            json.dump(summary, f, indent=1)
+
+
+def check_case(base, K):
+    complex_data = read_all(vtkXMLPPolyDataReader, base + "_complex.pvtp")
+    table, tris, pairs, planes = check_complex(complex_data)
+    input_volume = enclosed_volume(table, tris[pairs[:, 1] == -1])
+    volumes = subdomain_surfaces_closed(table, tris, pairs, K)
+    assert abs(volumes.sum() / input_volume - 1) < 1e-9, (volumes.sum(), input_volume)
+    # interface triangles: minimum angle bound except the counted exceptions
+    fd = complex_data.GetFieldData()
+    counted = int(vtk_to_numpy(fd.GetArray("InterfaceTrianglesBelowMinimumAngle"))[0])
+    interface = tris[pairs[:, 1] >= 0]
+    p = table[interface]
+    angles = []
+    for a, b, c in ((0, 1, 2), (1, 2, 0), (2, 0, 1)):
+        u, v = p[:, b] - p[:, a], p[:, c] - p[:, a]
+        angles.append(np.degrees(np.arctan2(np.linalg.norm(np.cross(u, v), axis=1), np.einsum("ij,ij->i", u, v))))
+    below = int((np.min(angles, axis=0) < 20.7 - 1e-9).sum())
+    assert below == counted, "interface triangles under the minimum angle: %d, reported %d" % (below, counted)
+    balance = float(np.abs(volumes / volumes.mean() - 1).max())
+
+    relaxed = read_all(vtkXMLPPolyDataReader, base + "_relaxed.pvtp")
+    rtable, rtris, rpairs, _ = check_complex(relaxed)
+    assert np.array_equal(rtris, tris) and np.array_equal(rpairs, pairs), "relaxation changed the topology"
+    rvolumes = subdomain_surfaces_closed(rtable, rtris, rpairs, K)
+    surface = rtris[rpairs[:, 1] == -1]
+    assert abs(rvolumes.sum() / enclosed_volume(rtable, surface) - 1) < 1e-9
+
+    mesh = read_all(vtkXMLPUnstructuredGridReader, base + "_mesh.pvtu")
+    figures = check_volume_mesh(mesh, surface)
+    # the boundary port: outer triangles with their input triangle
+    boundary = read_all(vtkXMLPPolyDataReader, base + "_boundary.pvtp")
+    assert boundary.GetNumberOfCells() == len(surface), (boundary.GetNumberOfCells(), len(surface))
+    assert vtk_to_numpy(boundary.GetCellData().GetArray("SourceFaceId")).min() >= 0
+
+    # canonical digest for the rank-independence comparison
+    gids = vtk_to_numpy(mesh.GetPointData().GetGlobalIds()).astype(np.int64)
+    from mesh_checks import cells_of, unify
+    coords = unify(gids, vtk_to_numpy(mesh.GetPoints().GetData()).astype(np.float64))
+    tets = gids[cells_of(mesh, 4)]
+    order = np.argsort(vtk_to_numpy(mesh.GetCellData().GetGlobalIds()))
+    np.savez(base + "_digest.npz", complex_points=table, complex_triangles=tris, complex_pairs=pairs,
+             relaxed_points=rtable, mesh_points=coords, mesh_tets=tets[order])
+    figures.update({"balance": balance, "interface_below_min_angle": counted})
+    return figures
+
+
+t.run_checks(main)
