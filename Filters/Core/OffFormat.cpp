@@ -150,7 +150,10 @@ bool triangulatePolygon(
     }
   }
   triangles.push_back({ corners[ring[0]], corners[ring[1]], corners[ring[2]] });
-  out.insert(out.end(), triangles.begin(), triangles.end());
+  for (const Triangle& t : triangles)
+  {
+    out.push_back(t);
+  }
   return true;
 }
 

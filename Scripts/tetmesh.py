@@ -1,0 +1,178 @@
+"""Parallel tetrahedral meshing of a closed surface, as one MPI command.
+
+    mpiexec -n N pvbatch Scripts/tetmesh.py INPUT -o OUT.pvtu [--subdomains K]
+        [--size H] [--strategy RecursiveBisection|ParallelPlanes]
+        [--direction Inertia|LongestExtent|X|Y|Z] [--json SUMMARY.json]
+
+Reads any surface ParaView reads (STL, OFF, PLY, OBJ, VTP...), runs
+VolumeBalancedCutter, InterfaceTriangulator, SurfaceRelaxer and
+ParallelTetMesher, writes the pieces with ParaView's parallel writer
+(OUT.pvtu plus OUT_boundary.pvtp with the outer boundary triangles) and
+prints a summary: tetrahedra, points, subdomains per rank, balance, time per
+stage and quality from ParaView's Mesh Quality filter. Errors exit non-zero
+with the message.
+"""
+import argparse
+import json
+import math
+import os
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def parse_arguments(argv):
+    p = argparse.ArgumentParser(prog="tetmesh.py", description=__doc__.split("\n\n")[0])
+    p.add_argument("input", help="closed surface file (STL, OFF, PLY, OBJ, VTP, ...)")
+    p.add_argument("-o", "--output", required=True, help="output .pvtu file")
+    p.add_argument("--subdomains", type=int, default=0, help="number of subdomains K (0: one per rank)")
+    p.add_argument("--size", type=float, default=0.0,
+                   help="target edge length for interfaces and tetrahedra (0: the surface's own resolution)")
+    p.add_argument("--strategy", default="RecursiveBisection", choices=["RecursiveBisection", "ParallelPlanes"])
+    p.add_argument("--direction", default="Inertia", choices=["Inertia", "LongestExtent", "X", "Y", "Z"])
+    p.add_argument("--radius-edge-ratio", type=float, default=2.0, help="TetGen quality bound (default 2.0)")
+    p.add_argument("--relax-iterations", type=int, default=10, help="surface relaxation sweeps (default 10)")
+    p.add_argument("--plugin", default=None, help="path of ParallelTetMesher.so (default: from the build tree)")
+    p.add_argument("--json", default=None, help="also write the summary as JSON")
+    return p.parse_args(argv)
+
+
+def find_plugin(explicit):
+    candidates = [explicit] if explicit else []
+    candidates += [os.environ.get("PTM_PLUGIN", ""),
+                   os.path.join(HERE, "..", "build", "lib", "paraview-plugins", "ParallelTetMesher",
+                                "ParallelTetMesher.so")]
+    for c in candidates:
+        if c and os.path.isfile(c):
+            return os.path.abspath(c)
+    raise SystemExit("error: ParallelTetMesher.so not found; build the project or pass --plugin")
+
+
+def fail(message):
+    sys.stderr.write("tetmesh: error: %s\n" % message)
+    sys.stderr.flush()
+    sys.exit(1)
+
+
+class ErrorLog:
+    """Collects the error messages of the filters' VTK objects (every rank
+    reports a failure of the plugin's filters, so rank 0 sees it too)."""
+
+    def __init__(self):
+        self.messages = []
+        self._callbacks = []
+
+    def watch(self, proxy):
+        from vtkmodules.util.misc import calldata_type
+        from vtkmodules.vtkCommonCore import VTK_STRING
+
+        @calldata_type(VTK_STRING)
+        def on_error(caller, event, message):
+            # VTK's message is "ERROR: In file, line N" then "class (address): text"
+            lines = [l.strip() for l in str(message).splitlines() if l.strip()]
+            text = lines[-1] if lines else ""
+            self.messages.append(text.split("): ", 1)[-1])
+
+        self._callbacks.append(on_error)
+        proxy.GetClientSideObject().AddObserver("ErrorEvent", on_error)
+        return proxy
+
+
+def main(argv):
+    args = parse_arguments(argv)
+    if not os.path.isfile(args.input):
+        fail("input file '%s' does not exist" % args.input)
+    if args.subdomains < 0 or args.size < 0:
+        fail("--subdomains and --size must not be negative")
+    from paraview import servermanager, simple
+
+    # without ns the proxies become functions of paraview.simple
+    simple.LoadPlugin(find_plugin(args.plugin), remote=False)
+    ranks = servermanager.ActiveConnection.GetNumberOfDataPartitions()
+    errors = ErrorLog()
+    times = {}
+
+    def run(stage, proxy):
+        errors.watch(proxy)
+        start = time.perf_counter()
+        proxy.UpdatePipeline()
+        times[stage] = time.perf_counter() - start
+        if errors.messages:
+            fail("%s failed: %s" % (stage, errors.messages[0]))
+        return proxy
+
+    reader = simple.OpenDataFile(args.input)
+    if reader is None:
+        fail("ParaView has no reader for '%s'" % args.input)
+    run("read", reader)
+    cutter = run("cut", simple.VolumeBalancedCutter(
+        Input=reader, NumberOfSubdomains=args.subdomains, Strategy=args.strategy, Direction=args.direction))
+    interfaces = run("interface", simple.InterfaceTriangulator(Input=cutter, MaximumEdgeLength=args.size))
+    relaxed = run("relax", simple.SurfaceRelaxer(Input=interfaces, NumberOfIterations=args.relax_iterations))
+    volume = args.size ** 3 / (6 * math.sqrt(2)) if args.size > 0 else 0.0
+    mesher = run("volume meshing", simple.ParallelTetMesher(
+        Input=relaxed, RadiusEdgeRatio=args.radius_edge_ratio, MaximumVolume=volume))
+
+    start = time.perf_counter()
+    output = os.path.abspath(args.output)
+    os.makedirs(os.path.dirname(output), exist_ok=True)
+    simple.SaveData(output, proxy=simple.OutputPort(mesher, 0))
+    boundary_file = os.path.splitext(output)[0] + "_boundary.pvtp"
+    simple.SaveData(boundary_file, proxy=simple.OutputPort(mesher, 1))
+    times["write"] = time.perf_counter() - start
+
+    info = mesher.GetDataInformation(0)
+    quality = simple.MeshQuality(Input=simple.OutputPort(mesher, 0), TetQualityMeasure="Minimum Dihedral Angle")
+    quality.UpdatePipeline()
+    qrange = quality.CellData["Quality"].GetRange()
+    below = simple.Threshold(Input=quality, Scalars=["CELLS", "Quality"], LowerThreshold=-1.0, UpperThreshold=10.0)
+    below.UpdatePipeline()
+    tets = info.GetNumberOfCells()
+    fetched = servermanager.Fetch(mesher)  # small field data only is read below
+    fd = fetched.GetFieldData()
+    per_subdomain = [int(fd.GetArray("SubdomainTetrahedra").GetValue(i))
+                     for i in range(fd.GetArray("SubdomainTetrahedra").GetNumberOfTuples())]
+    complex_fd = servermanager.Fetch(cutter).GetFieldData()
+    owner = [int(complex_fd.GetArray("SubdomainRank").GetValue(i))
+             for i in range(complex_fd.GetArray("SubdomainRank").GetNumberOfTuples())]
+    per_rank = [0] * ranks
+    subdomains_per_rank = [0] * ranks
+    for s, n in enumerate(per_subdomain):
+        per_rank[owner[s]] += n
+        subdomains_per_rank[owner[s]] += 1
+    mean = sum(per_rank) / float(ranks)
+    summary = {
+        "input": os.path.abspath(args.input),
+        "output": output,
+        "boundary_output": boundary_file,
+        "ranks": ranks,
+        "subdomains": len(per_subdomain),
+        "subdomains_per_rank": subdomains_per_rank,
+        "tetrahedra": int(tets),
+        "points": int(fd.GetArray("GlobalPointCount").GetValue(0)),
+        "tetrahedra_per_rank": per_rank,
+        "balance_max_over_mean": max(per_rank) / mean if mean > 0 else 0.0,
+        "seconds": times,
+        "quality": {
+            "minimum_dihedral_angle_degrees": qrange[0],
+            "share_below_10_degrees": below.GetDataInformation().GetNumberOfCells() / float(max(tets, 1)),
+        },
+    }
+    print("tetmesh: %d tetrahedra, %d points, %d subdomains on %d ranks (%s per rank)" % (
+        summary["tetrahedra"], summary["points"], summary["subdomains"], ranks, subdomains_per_rank))
+    print("tetmesh: balance max/mean tetrahedra per rank %.3f" % summary["balance_max_over_mean"])
+    print("tetmesh: seconds " + ", ".join("%s %.2f" % (k, v) for k, v in times.items()))
+    print("tetmesh: minimum dihedral angle %.2f degrees, %.4f%% of tetrahedra under 10 degrees" % (
+        qrange[0], 100 * summary["quality"]["share_below_10_degrees"]))
+    print("tetmesh: wrote %s and %s" % (output, boundary_file))
+    if args.json:
+        with open(args.json, "w") as f:
+            json.dump(summary, f, indent=1)
+    return summary
+
+
+if __name__ == "__main__":
+    # On success the script just ends, so pvbatch finalizes MPI on every rank;
+    # failures leave through fail() with a non-zero code.
+    main(sys.argv[1:])
