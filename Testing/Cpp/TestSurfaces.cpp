@@ -1,5 +1,7 @@
 #include "TestSurfaces.h"
 
+#include "OffFormat.h"
+
 #include <cmath>
 #include <map>
 #include <utility>
@@ -173,5 +175,20 @@ double signedVolume(const TriangleSurface& s)
     v += dot(s.points[t[0]], cross(s.points[t[1]], s.points[t[2]]));
   }
   return v / 6.0;
+}
+std::vector<NamedSurface> namedTestSurfaces()
+{
+  return {
+    { "ball", icosphere({ 0.1, -0.2, 0.3 }, 1.0, 3) },
+    { "box", subdividedBox({ 0, 0, 0 }, { 2, 1, 1 }, 6) },
+    { "torus", torus({ 0, 0, 0 }, 2.0, 0.7, 40, 16) },
+    { "boxWithCavity",
+      merged(subdividedBox({ -2, -2, -2 }, { 2, 2, 2 }, 8), flipped(icosphere({ 0, 0, 0 }, 1.0, 3))) },
+    { "twoBodies",
+      merged(icosphere({ -2, 0, 0 }, 1.0, 3), subdividedBox({ 1, -1, -1 }, { 3, 1, 1 }, 6)) },
+    // a CAD-like part from gmsh (OpenCASCADE booleans): planar faces on round
+    // coordinates, a through hole, a slot, a boss
+    { "bracket", readOffFile(PTM_DATA_DIR "/bracket.off").data.surface },
+  };
 }
 } // namespace ptm::test

@@ -4,6 +4,9 @@
 // tests know their true volume and need no files.
 #include "TriangleSurface.h"
 
+#include <string>
+#include <vector>
+
 namespace ptm::test
 {
 constexpr double kPi = 3.14159265358979323846;
@@ -21,5 +24,14 @@ TriangleSurface merged(const TriangleSurface& a, const TriangleSurface& b);
 // Volume of a polyhedron inscribed in the sphere / torus is below the exact one;
 // the tests compare against the divergence-theorem volume of the triangles.
 double signedVolume(const TriangleSurface& s);
+
+struct NamedSurface
+{
+  std::string name;
+  TriangleSurface surface;
+};
+// The surfaces every stage is tested on: ball, box, torus, box with a
+// spherical cavity, two disjoint bodies, and the CAD-like bracket from Data/.
+std::vector<NamedSurface> namedTestSurfaces();
 } // namespace ptm::test
 #endif

@@ -13,23 +13,10 @@ using namespace ptm::test;
 
 namespace
 {
-struct Case
-{
-  std::string name;
-  TriangleSurface surface;
-};
-
+using Case = NamedSurface;
 std::vector<Case> cases()
 {
-  return {
-    { "ball", icosphere({ 0.1, -0.2, 0.3 }, 1.0, 3) },
-    { "box", subdividedBox({ 0, 0, 0 }, { 2, 1, 1 }, 6) },
-    { "torus", torus({ 0, 0, 0 }, 2.0, 0.7, 40, 16) },
-    { "boxWithCavity",
-      merged(subdividedBox({ -2, -2, -2 }, { 2, 2, 2 }, 8), flipped(icosphere({ 0, 0, 0 }, 1.0, 3))) },
-    { "twoBodies",
-      merged(icosphere({ -2, 0, 0 }, 1.0, 3), subdividedBox({ 1, -1, -1 }, { 3, 1, 1 }, 6)) },
-  };
+  return namedTestSurfaces();
 }
 
 double triangleArea(const SurfaceComplex& c, const Triangle& t)
