@@ -21,7 +21,7 @@ PACKAGES=(
   # tests
   libgtest-dev
   # comparison peers and test geometry
-  gmsh tetgen python3-meshio python3-matplotlib
+  gmsh tetgen python3-meshio python3-matplotlib time
 )
 
 missing=()
