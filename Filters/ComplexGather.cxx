@@ -46,6 +46,7 @@ bool allGatherComplex(vtkMultiProcessController* controller, const ComplexPiece&
   whole.subdomainMeasure = local.subdomainMeasure;
   whole.planeSubdomainCount = local.planeSubdomainCount;
   whole.globalPointCount = local.globalPointCount;
+  whole.inputMeanEdgeLength = local.inputMeanEdgeLength;
   SurfaceComplex& w = whole.complex;
   w.planes = c.planes;
   w.subdomainCount = c.subdomainCount;

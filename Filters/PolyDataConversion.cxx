@@ -217,6 +217,10 @@ void complexToPolyData(const ComplexPiece& piece, const std::vector<int>& keep, 
   total->SetName(arrays::GlobalPointCount);
   total->InsertNextValue(piece.globalPointCount);
   fd->AddArray(total);
+  vtkNew<vtkDoubleArray> meanEdge;
+  meanEdge->SetName(arrays::InputMeanEdgeLength);
+  meanEdge->InsertNextValue(piece.inputMeanEdgeLength);
+  fd->AddArray(meanEdge);
 }
 
 bool complexFromPolyData(vtkPolyData* input, ComplexPiece& piece, std::string& error)
@@ -299,6 +303,10 @@ bool complexFromPolyData(vtkPolyData* input, ComplexPiece& piece, std::string& e
     }
   }
   piece.globalPointCount = total->GetValue(0);
+  if (auto* meanEdge = vtkDoubleArray::SafeDownCast(fd->GetAbstractArray(arrays::InputMeanEdgeLength)))
+  {
+    piece.inputMeanEdgeLength = meanEdge->GetNumberOfTuples() ? meanEdge->GetValue(0) : 0.0;
+  }
 
   const vtkIdType n = input->GetNumberOfPoints();
   c.points.resize(static_cast<std::size_t>(n));

@@ -25,6 +25,7 @@ struct ComplexPiece
   std::vector<double> subdomainMeasure;
   std::vector<int> planeSubdomainCount;
   Index globalPointCount = 0;
+  double inputMeanEdgeLength = 0; // the input surface's mean edge: default mesh size for every stage
 };
 
 // Writes the faces of the piece (triangles, and interface regions as closed

@@ -21,5 +21,6 @@ constexpr const char* SubdomainMeasure = "SubdomainMeasure";       // double per
 constexpr const char* GlobalPointCount = "GlobalPointCount";       // vtkIdType: points of the whole complex
 constexpr const char* BalanceCriterionName = "BalanceCriterion";   // string
 constexpr const char* MaximumImbalance = "MaximumImbalance";       // double
+constexpr const char* InputMeanEdgeLength = "InputMeanEdgeLength"; // double: the input surface's resolution
 } // namespace ptm::arrays
 #endif

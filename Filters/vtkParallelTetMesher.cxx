@@ -28,6 +28,7 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <chrono>
+#include <cmath>
 #include <exception>
 #include <limits>
 #include <new>
@@ -111,7 +112,11 @@ int vtkParallelTetMesher::RequestData(
   // Independent meshing of every owned subdomain.
   ptm::TetMeshingOptions options;
   options.radiusEdgeRatio = this->RadiusEdgeRatio;
-  options.maximumVolume = this->MaximumVolume;
+  // automatic size: a regular tetrahedron with the input surface's mean edge,
+  // the same for every subdomain, so the density does not depend on K
+  options.maximumVolume = this->MaximumVolume > 0 || !(piece.inputMeanEdgeLength > 0)
+    ? this->MaximumVolume
+    : std::pow(piece.inputMeanEdgeLength, 3) / (6.0 * std::sqrt(2.0));
   options.minimumDihedralAngle = this->MinimumDihedralAngle;
   options.extraSwitches = this->ExtraSwitches;
   std::vector<ptm::SubdomainSurface> surfaces(mine.size());

@@ -49,7 +49,9 @@ public:
 
   ///@{
   /// Largest tetrahedron volume (-a); 0 (default) = automatic: the volume of a
-  /// regular tetrahedron whose edge is the mean edge length of the subdomain's surface.
+  /// regular tetrahedron whose edge is the mean edge length of the input
+  /// surface (recorded by the cutter), the same for every subdomain, so the
+  /// mesh density does not depend on the number of subdomains.
   vtkSetClampMacro(MaximumVolume, double, 0.0, 1e300);
   vtkGetMacro(MaximumVolume, double);
   ///@}

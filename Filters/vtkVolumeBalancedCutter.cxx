@@ -115,6 +115,7 @@ int vtkVolumeBalancedCutter::RequestData(
   piece.subdomainMeasure = result.subdomainMeasure;
   piece.subdomainRank = ptm::assignSubdomainsToRanks(result.subdomainMeasure, ranks);
   piece.globalPointCount = static_cast<ptm::Index>(result.complex.points.size());
+  piece.inputMeanEdgeLength = result.inputMeanEdgeLength;
   piece.complex = std::move(result.complex);
   std::vector<int> mine;
   for (int s = 0; s < piece.complex.subdomainCount; ++s)

@@ -154,6 +154,15 @@ DecompositionResult decomposeVolumeBalanced(
     totalVolume += result.orientation.shellVolume[k];
   }
   result.totalVolume = totalVolume;
+  double edgeSum = 0;
+  for (const auto& t : surface.triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      edgeSum += norm(surface.points[t[(k + 1) % 3]] - surface.points[t[k]]);
+    }
+  }
+  result.inputMeanEdgeLength = edgeSum / (3.0 * static_cast<double>(surface.triangles.size()));
   if (!(totalVolume > 0))
   {
     result.error = "the surface encloses no volume";

@@ -48,6 +48,7 @@ struct DecompositionResult
   std::vector<double> subdomainVolume;  // divergence theorem over each closed subdomain
   std::vector<double> subdomainMeasure; // by the balance criterion
   double totalVolume = 0;               // of the oriented input surface
+  double inputMeanEdgeLength = 0;       // of the merged input triangles: the default mesh size
   double maximumImbalance = 0;          // max over subdomains of |measure / target - 1|
 };
 

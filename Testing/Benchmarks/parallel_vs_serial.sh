@@ -18,7 +18,8 @@ if [ "$(id -u)" -eq 0 ]; then
 fi
 surface="$out/ball_$size"
 if [ ! -f "$surface.stl" ]; then
-  gmsh -2 Data/geo/ball.geo -clmin "$size" -clmax "$size" -format stl -bin -o "$surface.stl" > "$out/gmsh.log"
+  # ball.geo sets a 0.12 size; -clscale scales it
+  gmsh -2 Data/geo/ball.geo -clscale "$(/usr/bin/python3 -c "print($size / 0.12)")" -format stl -bin -o "$surface.stl" > "$out/gmsh.log"
   /usr/bin/python3 - "$surface" <<'PY'
 import sys, meshio, numpy as np
 m = meshio.read(sys.argv[1] + ".stl")

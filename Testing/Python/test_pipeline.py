@@ -14,19 +14,13 @@ from paraview import simple
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLPPolyDataReader, vtkXMLPUnstructuredGridReader
 
-# (surface, K, strategy, direction)
-CASES = [
-    ("ball.stl", 2, "RecursiveBisection", "Inertia"),
-    ("ball.stl", 7, "RecursiveBisection", "Inertia"),
-    ("ball.off", 4, "ParallelPlanes", "X"),
-    ("torus.stl", 4, "ParallelPlanes", "X"),
-    ("torus.stl", 3, "RecursiveBisection", "Inertia"),
-    ("box_with_cavity.stl", 4, "RecursiveBisection", "LongestExtent"),
-    ("box_with_cavity.stl", 2, "ParallelPlanes", "Z"),
-    ("two_bodies.stl", 4, "RecursiveBisection", "Inertia"),
-    ("bracket.stl", 7, "ParallelPlanes", "LongestExtent"),
-    ("bracket.stl", 4, "RecursiveBisection", "Inertia"),
-]
+# (surface, K, strategy, direction): every bundled closed surface, K = 2, 4, 7,
+# both strategies, and the OFF reader's ball once.
+CASES = [(surface, K, strategy, "LongestExtent" if strategy == "ParallelPlanes" else "Inertia")
+         for surface in ("ball.stl", "torus.stl", "box_with_cavity.stl", "two_bodies.stl", "bracket.stl")
+         for K in (2, 4, 7)
+         for strategy in ("ParallelPlanes", "RecursiveBisection")]
+CASES.append(("ball.off", 3, "ParallelPlanes", "X"))
 
 
 def read_all(reader_class, path):
