@@ -48,6 +48,18 @@ std::vector<T> gather(vtkMultiProcessController* c, const std::vector<T>& local,
   }
   return all;
 }
+// Element-wise reduction of a vector that has the same length on every rank.
+template <typename T>
+void allReduce(vtkMultiProcessController* c, std::vector<T>& values, int operation)
+{
+  if (!parallel(c) || values.empty())
+  {
+    return;
+  }
+  std::vector<T> result(values.size());
+  c->AllReduce(values.data(), result.data(), static_cast<vtkIdType>(values.size()), operation);
+  values.swap(result);
+}
 } // namespace
 
 int rankOf(vtkMultiProcessController* c)
@@ -171,38 +183,17 @@ TriangleSurface allGatherSurface(vtkMultiProcessController* c, const TriangleSur
 
 void allReduceMax(vtkMultiProcessController* c, std::vector<long long>& values)
 {
-  if (!parallel(c) || values.empty())
-  {
-    return;
-  }
-  std::vector<long long> result(values.size());
-  c->AllReduce(values.data(), result.data(), static_cast<vtkIdType>(values.size()),
-    vtkCommunicator::MAX_OP);
-  values.swap(result);
+  allReduce(c, values, vtkCommunicator::MAX_OP);
 }
 
 void allReduceMin(vtkMultiProcessController* c, std::vector<long long>& values)
 {
-  if (!parallel(c) || values.empty())
-  {
-    return;
-  }
-  std::vector<long long> result(values.size());
-  c->AllReduce(values.data(), result.data(), static_cast<vtkIdType>(values.size()),
-    vtkCommunicator::MIN_OP);
-  values.swap(result);
+  allReduce(c, values, vtkCommunicator::MIN_OP);
 }
 
 void allReduceSum(vtkMultiProcessController* c, std::vector<double>& values)
 {
-  if (!parallel(c) || values.empty())
-  {
-    return;
-  }
-  std::vector<double> result(values.size());
-  c->AllReduce(values.data(), result.data(), static_cast<vtkIdType>(values.size()),
-    vtkCommunicator::SUM_OP);
-  values.swap(result);
+  allReduce(c, values, vtkCommunicator::SUM_OP);
 }
 
 std::vector<long long> allGatherValues(vtkMultiProcessController* c,

@@ -48,6 +48,25 @@ int vtkSurfaceRelaxer::RequestData(
   vtkMultiProcessController* controller = this->Controller;
   const int rank = ptm::rankOf(controller);
   std::string message, localError;
+  // Every rank takes the same branch: a failure anywhere fails all, an abort
+  // asked on any rank aborts all.
+  auto failedEverywhere = [&]() {
+    if (ptm::agreeAllSucceeded(controller, localError.empty(), localError, message))
+    {
+      return false;
+    }
+    vtkErrorMacro(<< message);
+    output->Initialize();
+    return true;
+  };
+  auto abortedEverywhere = [&]() {
+    if (!ptm::agreeAnyAborted(controller, this->CheckAbort()))
+    {
+      return false;
+    }
+    output->Initialize();
+    return true;
+  };
 
   this->UpdateProgress(0.0);
   this->SetProgressText("Gathering the complex");
@@ -56,10 +75,8 @@ int vtkSurfaceRelaxer::RequestData(
   {
     localError = "SurfaceRelaxer: " + localError;
   }
-  if (!ptm::agreeAllSucceeded(controller, localError.empty(), localError, message))
+  if (failedEverywhere())
   {
-    vtkErrorMacro(<< message);
-    output->Initialize();
     return 0;
   }
   ptm::ComplexPiece whole;
@@ -67,15 +84,12 @@ int vtkSurfaceRelaxer::RequestData(
   {
     localError = "SurfaceRelaxer: " + localError;
   }
-  if (!ptm::agreeAllSucceeded(controller, localError.empty(), localError, message))
+  if (failedEverywhere())
   {
-    vtkErrorMacro(<< message);
-    output->Initialize();
     return 0;
   }
-  if (ptm::agreeAnyAborted(controller, this->CheckAbort()))
+  if (abortedEverywhere())
   {
-    output->Initialize();
     return 1;
   }
   this->UpdateProgress(0.2);
@@ -96,15 +110,12 @@ int vtkSurfaceRelaxer::RequestData(
   {
     localError = std::string("SurfaceRelaxer: unexpected failure: ") + e.what();
   }
-  if (!ptm::agreeAllSucceeded(controller, localError.empty(), localError, message))
+  if (failedEverywhere())
   {
-    vtkErrorMacro(<< message);
-    output->Initialize();
     return 0;
   }
-  if (ptm::agreeAnyAborted(controller, this->CheckAbort()))
+  if (abortedEverywhere())
   {
-    output->Initialize();
     return 1;
   }
   this->UpdateProgress(0.9);

@@ -185,7 +185,8 @@ DecompositionResult decomposeVolumeBalanced(
   // the plane moves volume, so the split is tried on a copy, measured, and the
   // offset corrected (Newton with the cross-section area) until the part
   // below is within a quarter of the tolerance of one subdomain; if snapping
-  // makes that impossible, it is reduced step by step.
+  // makes that impossible, it is halved step by step down to 0.001 (never 0:
+  // a vertex a hair's breadth from the plane would leave a degenerate sliver).
   auto cut = [&](int cell, const Vec3& normal, double fraction, int parts, int& below,
                int& above) -> bool {
     const HalfSpaceMeasure measure(c, cell, normal, options.criterion);
@@ -214,7 +215,8 @@ DecompositionResult decomposeVolumeBalanced(
     PlaneSplitStats bestStats;
     double bestError = std::numeric_limits<double>::infinity();
     std::string lastError;
-    for (double snap = options.snapFraction;; snap = snap > 0.01 ? 0.5 * snap : 0.0)
+    const double smallestSnap = std::min(options.snapFraction, 0.001);
+    for (double snap = options.snapFraction;; snap = std::max(0.5 * snap, smallestSnap))
     {
       PlaneSplitOptions splitOptions;
       splitOptions.snapFraction = snap;
@@ -250,7 +252,7 @@ DecompositionResult decomposeVolumeBalanced(
         }
         offset -= missing / area;
       }
-      if (bestError <= allowed || snap == 0.0)
+      if (bestError <= allowed || snap <= smallestSnap)
       {
         break;
       }

@@ -34,7 +34,7 @@ struct DecompositionOptions
   CutDirection direction = CutDirection::LongestExtent;
   BalanceCriterion criterion = BalanceCriterion::Volume;
   double balanceTolerance = 0.01; // allowed relative deviation of a subdomain from its target
-  double snapFraction = 0.1;      // see PlaneSplit.h
+  double snapFraction = 0.05;     // see PlaneSplit.h; balancing may lower it to 0.001, never to 0
 };
 
 struct DecompositionResult

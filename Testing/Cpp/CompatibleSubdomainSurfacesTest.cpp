@@ -1,9 +1,10 @@
 // Stages 1 and 2 together (issue: InterfaceTriangulator): for every test
 // surface, K and strategy, triangulating every interface region of the
 // decomposition gives each subdomain a closed, edge-manifold, outward surface
-// whose volumes add up to the input volume; interface triangles respect the
-// minimum angle except the counted exceptions.
+// that does not cross itself and whose volumes add up to the input volume;
+// interface triangles under the minimum angle are counted.
 #include "InterfaceTriangulation.h"
+#include "SelfIntersectionCheck.h"
 #include "TestSurfaces.h"
 #include "VolumeBalancedDecomposition.h"
 
@@ -125,6 +126,10 @@ TEST_P(CompatibleSubdomainSurfaces, ClosedManifoldOutwardAndVolumesAddUp)
       }
       EXPECT_EQ(bad, 0u) << label.str() << ": subdomain " << s << " not closed or not edge-manifold";
       TriangleSurface closed{ c.points, surface };
+      // TetGen can only mesh it if it does not cross itself (exact predicates)
+      const SelfIntersectionReport crossing = checkSelfIntersection(closed);
+      EXPECT_TRUE(crossing.checked) << label.str() << ": " << crossing.note;
+      EXPECT_FALSE(crossing.intersects) << label.str() << ": subdomain " << s << " crosses itself";
       const double v = signedVolume(closed);
       EXPECT_GT(v, 0) << label.str() << ": subdomain " << s;
       total += v;

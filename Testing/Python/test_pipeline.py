@@ -37,6 +37,8 @@ def main():
     out_dir = os.path.join(t.OUTPUT, "pipeline_np%d" % ranks)
     if t.rank() == 0:
         os.makedirs(out_dir, exist_ok=True)
+        for old in os.listdir(out_dir):  # results of an earlier run must not be compared
+            os.remove(os.path.join(out_dir, old)) if os.path.isfile(os.path.join(out_dir, old)) else None
     t.barrier()
     summary = {}
     for surface, K, strategy, direction in CASES:
