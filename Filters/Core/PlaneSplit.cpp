@@ -524,14 +524,11 @@ bool splitCell(SurfaceComplex& c, int cell, const Vec3& n, double offset, int pl
     }
     cut.edges.push_back({ edge[1], edge[0] });
   }
-  if (cut.edges.empty())
+  stats.interfaceEdges = cut.edges.size();
+  if (!cut.edges.empty())
   {
-    std::ostringstream msg;
-    msg << "cutting plane " << planeId << " does not cut the part it was placed in";
-    error = msg.str();
-    return false;
+    c.interfaces.push_back(std::move(cut));
   }
-  c.interfaces.push_back(std::move(cut));
   return true;
 }
 } // namespace ptm

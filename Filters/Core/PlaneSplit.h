@@ -20,7 +20,9 @@
 //    at about the local boundary spacing, shared by the region pieces and
 //    the new interface;
 //  * the new interface region (pair {below, above}, normal = plane normal) is
-//    bounded by the edges left open by the faces now labeled `below`.
+//    bounded by the edges left open by the faces now labeled `below`; a
+//    plane through the gap between two bodies of the part leaves none, which
+//    is a valid cut with no interface.
 #include "SurfaceComplex.h"
 
 #include <string>
@@ -40,6 +42,8 @@ struct PlaneSplitStats
   std::size_t splitTriangles = 0;
   std::size_t snappedPoints = 0; // vertices off the plane treated as on it
   std::size_t chordPoints = 0;   // new points on lines where two planes meet
+  std::size_t interfaceEdges = 0; // boundary edges of the new interface (0: the plane
+                                  // passes between bodies of the part, no interface)
 };
 
 // Returns false with a message if the part's faces do not form a closed

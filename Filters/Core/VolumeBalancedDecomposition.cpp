@@ -235,6 +235,10 @@ DecompositionResult decomposeVolumeBalanced(
           break;
         }
         const double missing = volumeCriterion ? labelVolume(trial, below) - target : 0.0;
+        // the volume changes with the offset at the rate of the cross-section area
+        const double area = stats.interfaceEdges == 0
+          ? 0.0
+          : std::fabs(dot(normal, vectorArea(trial.points, trial.interfaces.back().edges)));
         if (std::fabs(missing) < bestError)
         {
           bestError = std::fabs(missing);
@@ -245,7 +249,6 @@ DecompositionResult decomposeVolumeBalanced(
         {
           break;
         }
-        const double area = std::fabs(dot(normal, vectorArea(best.points, best.interfaces.back().edges)));
         if (!(area > 0))
         {
           break;

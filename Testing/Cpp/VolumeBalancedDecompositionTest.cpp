@@ -306,3 +306,20 @@ TEST(SubdomainAssignment, OneEachOrBalancedByMeasure)
     EXPECT_GT(l, 0);
   }
 }
+
+TEST(VolumeBalancedDecomposition, PlaneThroughTheGapBetweenBodiesIsAValidCut)
+{
+  // two equal boxes apart along x: the balanced plane falls in the gap
+  const TriangleSurface two =
+    merged(subdividedBox({ 0, 0, 0 }, { 1, 1, 1 }, 3), subdividedBox({ 2, 0, 0 }, { 3, 1, 1 }, 3));
+  DecompositionOptions options;
+  options.numberOfSubdomains = 2;
+  options.strategy = CutStrategy::ParallelPlanes;
+  options.direction = CutDirection::X;
+  const DecompositionResult r = decomposeVolumeBalanced(two, options);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_TRUE(r.complex.interfaces.empty());
+  EXPECT_NEAR(r.subdomainVolume[0], 1.0, 1e-12);
+  EXPECT_NEAR(r.subdomainVolume[1], 1.0, 1e-12);
+  EXPECT_EQ(r.complex.triangles.size(), two.triangles.size());
+}
