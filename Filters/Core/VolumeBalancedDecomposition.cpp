@@ -260,6 +260,38 @@ DecompositionResult decomposeVolumeBalanced(
         break;
       }
     }
+    // Safety net: if the measure function's start led nowhere (seen with a
+    // part of two bodies bounded by two nearly parallel interfaces, where the
+    // start fell in the gap between them), bisect on the real split volume.
+    if (volumeCriterion && bestError > allowed)
+    {
+      PlaneSplitOptions splitOptions;
+      splitOptions.snapFraction = options.snapFraction;
+      double lo = measure.minimumOffset(), hi = measure.maximumOffset();
+      for (int step = 0; step < 60 && bestError > allowed; ++step)
+      {
+        const double middle = 0.5 * (lo + hi);
+        SurfaceComplex trial = c;
+        CuttingPlane plane;
+        plane.normal = normal;
+        plane.origin = centroid - (dot(normal, centroid) - middle) * normal;
+        plane.cutSubdomainCount = parts;
+        trial.planes.push_back(plane);
+        PlaneSplitStats stats;
+        if (!splitCell(trial, cell, normal, middle, planeId, below, above, splitOptions, stats, lastError))
+        {
+          break;
+        }
+        const double missing = labelVolume(trial, below) - target;
+        if (std::fabs(missing) < bestError)
+        {
+          bestError = std::fabs(missing);
+          best = std::move(trial);
+          bestStats = stats;
+        }
+        (missing < 0 ? lo : hi) = middle;
+      }
+    }
     if (!std::isfinite(bestError))
     {
       error = lastError;
