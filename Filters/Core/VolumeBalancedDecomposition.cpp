@@ -215,41 +215,42 @@ DecompositionResult decomposeVolumeBalanced(
     PlaneSplitStats bestStats;
     double bestError = std::numeric_limits<double>::infinity();
     std::string lastError;
+    // Splits a copy of the complex at `at`; keeps it if it is the best so far.
+    // Returns false if the split failed; `missing` and `area` describe it.
+    auto tryCut = [&](double at, double snap, double& missing, double& area) {
+      SurfaceComplex trial = c;
+      CuttingPlane plane;
+      plane.normal = normal;
+      plane.origin = centroid - (dot(normal, centroid) - at) * normal;
+      plane.cutSubdomainCount = parts;
+      trial.planes.push_back(plane);
+      PlaneSplitOptions splitOptions;
+      splitOptions.snapFraction = snap;
+      PlaneSplitStats stats;
+      if (!splitCell(trial, cell, normal, at, planeId, below, above, splitOptions, stats, lastError))
+      {
+        return false;
+      }
+      missing = volumeCriterion ? labelVolume(trial, below) - target : 0.0;
+      // the volume changes with the offset at the rate of the cross-section area
+      area = stats.interfaceEdges == 0
+        ? 0.0
+        : std::fabs(dot(normal, vectorArea(trial.points, trial.interfaces.back().edges)));
+      if (std::fabs(missing) < bestError)
+      {
+        bestError = std::fabs(missing);
+        best = std::move(trial);
+        bestStats = stats;
+      }
+      return true;
+    };
     const double smallestSnap = std::min(options.snapFraction, 0.001);
     for (double snap = options.snapFraction;; snap = std::max(0.5 * snap, smallestSnap))
     {
-      PlaneSplitOptions splitOptions;
-      splitOptions.snapFraction = snap;
       for (int attempt = 0; attempt < 4; ++attempt)
       {
-        SurfaceComplex trial = c;
-        CuttingPlane plane;
-        plane.normal = normal;
-        plane.origin = centroid - (dot(normal, centroid) - offset) * normal;
-        plane.cutSubdomainCount = parts;
-        trial.planes.push_back(plane);
-        PlaneSplitStats stats;
-        if (!splitCell(trial, cell, normal, offset, planeId, below, above, splitOptions, stats,
-              lastError))
-        {
-          break;
-        }
-        const double missing = volumeCriterion ? labelVolume(trial, below) - target : 0.0;
-        // the volume changes with the offset at the rate of the cross-section area
-        const double area = stats.interfaceEdges == 0
-          ? 0.0
-          : std::fabs(dot(normal, vectorArea(trial.points, trial.interfaces.back().edges)));
-        if (std::fabs(missing) < bestError)
-        {
-          bestError = std::fabs(missing);
-          best = std::move(trial);
-          bestStats = stats;
-        }
-        if (bestError <= allowed)
-        {
-          break;
-        }
-        if (!(area > 0))
+        double missing = 0, area = 0;
+        if (!tryCut(offset, snap, missing, area) || bestError <= allowed || !(area > 0))
         {
           break;
         }
@@ -265,29 +266,14 @@ DecompositionResult decomposeVolumeBalanced(
     // start fell in the gap between them), bisect on the real split volume.
     if (volumeCriterion && bestError > allowed)
     {
-      PlaneSplitOptions splitOptions;
-      splitOptions.snapFraction = options.snapFraction;
       double lo = measure.minimumOffset(), hi = measure.maximumOffset();
       for (int step = 0; step < 60 && bestError > allowed; ++step)
       {
         const double middle = 0.5 * (lo + hi);
-        SurfaceComplex trial = c;
-        CuttingPlane plane;
-        plane.normal = normal;
-        plane.origin = centroid - (dot(normal, centroid) - middle) * normal;
-        plane.cutSubdomainCount = parts;
-        trial.planes.push_back(plane);
-        PlaneSplitStats stats;
-        if (!splitCell(trial, cell, normal, middle, planeId, below, above, splitOptions, stats, lastError))
+        double missing = 0, area = 0;
+        if (!tryCut(middle, options.snapFraction, missing, area))
         {
           break;
-        }
-        const double missing = labelVolume(trial, below) - target;
-        if (std::fabs(missing) < bestError)
-        {
-          bestError = std::fabs(missing);
-          best = std::move(trial);
-          bestStats = stats;
         }
         (missing < 0 ? lo : hi) = middle;
       }
