@@ -1,19 +1,24 @@
 #include "OffFormat.h"
 
+#include <algorithm>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
-#include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
-#include <set>
-#include <sstream>
+#include <iomanip>
+#include <limits>
+#include <string_view>
+#include <system_error>
+#include <type_traits>
 
 namespace ptm
 {
 namespace
 {
-// Splits the stream into lines, dropping comments and blank lines, and keeps
-// the line numbers for messages.
+// Splits the stream into lines, drops '#' comments and blank lines, and
+// keeps the line numbers for the messages.
 class OffLines
 {
 public:
@@ -22,27 +27,39 @@ public:
   {
   }
 
-  // The next non-blank line's words; false at the end.
-  bool next(std::vector<std::string>& words)
+  // The words of the next line that has any; false at the end of the stream.
+  bool next(std::vector<std::string_view>& words)
   {
-    std::string line;
-    while (std::getline(this->In, line))
+    while (std::getline(this->In, this->Line))
     {
       ++this->Number;
-      const std::size_t hash = line.find('#');
+      const std::size_t hash = this->Line.find('#');
       if (hash != std::string::npos)
       {
-        line.erase(hash);
+        this->Line.erase(hash);
       }
-      std::istringstream split(line);
       words.clear();
-      std::string word;
-      while (split >> word)
+      const std::string_view line(this->Line);
+      std::size_t i = 0;
+      while (i < line.size())
       {
-        words.push_back(word);
+        while (i < line.size() && isSpace(line[i]))
+        {
+          ++i;
+        }
+        const std::size_t begin = i;
+        while (i < line.size() && !isSpace(line[i]))
+        {
+          ++i;
+        }
+        if (i > begin)
+        {
+          words.push_back(line.substr(begin, i - begin));
+        }
       }
       if (!words.empty())
       {
+        ++this->NonBlank;
         return true;
       }
     }
@@ -50,33 +67,113 @@ public:
   }
 
   int number() const { return this->Number; }
+  int nonBlankLines() const { return this->NonBlank; }
+  bool failedToRead() const { return this->In.bad(); }
 
 private:
+  static bool isSpace(char c)
+  {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f';
+  }
+
   std::istream& In;
+  std::string Line; // the words point into it until the next call
   int Number = 0;
+  int NonBlank = 0;
 };
 
-bool parseDouble(const std::string& word, double& value)
+enum class Parsed
 {
-  const char* begin = word.c_str();
-  char* end = nullptr;
-  errno = 0;
-  value = std::strtod(begin, &end);
-  return end != begin && *end == '\0';
+  Ok,
+  NotANumber,
+  OutOfRange
+};
+
+// Whole-word, locale-independent parsing ("+1" is accepted, "1x" is not).
+template <typename T>
+Parsed parseNumber(std::string_view word, T& value)
+{
+  if (word.size() > 1 && word[0] == '+' && word[1] != '-' && word[1] != '+')
+  {
+    word.remove_prefix(1);
+  }
+  const char* end = word.data() + word.size();
+  std::from_chars_result r;
+  if constexpr (std::is_floating_point_v<T>)
+  {
+    r = std::from_chars(word.data(), end, value, std::chars_format::general);
+  }
+  else
+  {
+    r = std::from_chars(word.data(), end, value, 10);
+  }
+  if (r.ec == std::errc::result_out_of_range && r.ptr == end)
+  {
+    if constexpr (std::is_floating_point_v<T>)
+    {
+      // Underflow (a magnitude below the smallest double) reads as zero;
+      // only overflow is an error. The exponent, or the absence of any
+      // non-zero digit before the decimal point, tells which.
+      const std::size_t e = word.find_first_of("eE");
+      const std::string_view mantissa = word.substr(0, e);
+      const bool negativeExponent = e != std::string_view::npos && e + 1 < word.size() && word[e + 1] == '-';
+      const bool noIntegerDigits =
+        mantissa.substr(0, mantissa.find('.')).find_first_of("123456789") == std::string_view::npos;
+      if (e == std::string_view::npos ? noIntegerDigits : negativeExponent)
+      {
+        value = (word[0] == '-') ? -0.0 : 0.0;
+        return Parsed::Ok;
+      }
+    }
+    return Parsed::OutOfRange;
+  }
+  return (r.ec == std::errc() && r.ptr == end && !word.empty()) ? Parsed::Ok : Parsed::NotANumber;
 }
 
-bool parseIndex(const std::string& word, long long& value)
+std::string quoted(std::string_view word)
 {
-  const char* begin = word.c_str();
-  char* end = nullptr;
-  errno = 0;
-  value = std::strtoll(begin, &end, 10);
-  return end != begin && *end == '\0' && errno == 0;
+  constexpr std::size_t kMax = 40;
+  std::string s(word.substr(0, kMax));
+  if (word.size() > kMax)
+  {
+    s += "...";
+  }
+  return "'" + s + "'";
 }
 
 std::string at(int line)
 {
   return "line " + std::to_string(line) + ": ";
+}
+
+std::string plural(long long n, const char* word)
+{
+  return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
+}
+
+bool isKnownHeader(std::string_view w)
+{
+  // [ST][C][N]OFF in Geomview's order
+  if (w.substr(0, 2) == "ST")
+  {
+    w.remove_prefix(2);
+  }
+  if (!w.empty() && w[0] == 'C')
+  {
+    w.remove_prefix(1);
+  }
+  if (!w.empty() && w[0] == 'N')
+  {
+    w.remove_prefix(1);
+  }
+  return w == "OFF";
+}
+
+OffReadResult failure(std::string message)
+{
+  OffReadResult r;
+  r.error = std::move(message);
+  return r;
 }
 } // namespace
 
@@ -84,46 +181,67 @@ bool triangulatePolygon(
   const std::vector<Vec3>& points, const std::vector<Index>& corners, std::vector<Triangle>& out)
 {
   const std::size_t n = corners.size();
-  Vec3 normal{ 0, 0, 0 };
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    const Vec3& a = points[corners[i]];
-    const Vec3& b = points[corners[(i + 1) % n]];
-    normal = normal + Vec3{ (a[1] - b[1]) * (a[2] + b[2]), (a[2] - b[2]) * (a[0] + b[0]),
-                        (a[0] - b[0]) * (a[1] + b[1]) };
-  }
-  if (!(norm(normal) > 0))
+  if (n < 3)
   {
     return false;
   }
-  // 2D coordinates in the plane of the normal
-  const int drop = std::fabs(normal[0]) >= std::fabs(normal[1])
-    ? (std::fabs(normal[0]) >= std::fabs(normal[2]) ? 0 : 2)
-    : (std::fabs(normal[1]) >= std::fabs(normal[2]) ? 1 : 2);
-  const int u = (drop + 1) % 3, v = (drop + 2) % 3;
-  const double sign = normal[drop] > 0 ? 1.0 : -1.0;
+  // Newell's normal (twice the vector area), relative to the first corner
+  // for precision.
+  const Vec3 origin = points[corners[0]];
+  std::vector<Vec3> local(n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    local[i] = points[corners[i]] - origin;
+  }
+  Vec3 normal{ 0, 0, 0 };
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    normal = normal + cross(local[i], local[(i + 1) % n]);
+  }
+  const double length = norm(normal);
+  if (!(length > 0) || !std::isfinite(length))
+  {
+    return false;
+  }
+  // 2D coordinates in the plane of the normal: (e1, e2, normal) is right
+  // handed, so the polygon runs counter-clockwise in (e1, e2).
+  Vec3 e1, e2;
+  planeBasis((1.0 / length) * normal, e1, e2);
   std::vector<std::array<double, 2>> p(n);
   for (std::size_t i = 0; i < n; ++i)
   {
-    p[i] = { points[corners[i]][u], sign * points[corners[i]][v] };
+    p[i] = { dot(local[i], e1), dot(local[i], e2) };
   }
   auto orient = [&](std::size_t a, std::size_t b, std::size_t c) {
     return (p[b][0] - p[a][0]) * (p[c][1] - p[a][1]) - (p[b][1] - p[a][1]) * (p[c][0] - p[a][0]);
   };
+  auto sameSpot = [&](std::size_t a, std::size_t b) { return p[a] == p[b]; };
+  auto squaredLength = [&](std::size_t a, std::size_t b) {
+    const double dx = p[b][0] - p[a][0], dy = p[b][1] - p[a][1];
+    return dx * dx + dy * dy;
+  };
+
   std::vector<std::size_t> ring(n);
   for (std::size_t i = 0; i < n; ++i)
   {
     ring[i] = i;
   }
   std::vector<Triangle> triangles;
+  triangles.reserve(n - 2);
   while (ring.size() > 3)
   {
     const std::size_t m = ring.size();
-    bool clipped = false;
-    for (std::size_t k = 0; k < m && !clipped; ++k)
+    // Among the ears (a strictly convex corner whose triangle holds no other
+    // corner, not even on its boundary), clip the best shaped one; on large
+    // polygons the first one, to stay near O(n^2).
+    const bool firstEar = m > 64;
+    std::size_t best = m;
+    double bestShape = -1;
+    for (std::size_t k = 0; k < m; ++k)
     {
       const std::size_t a = ring[(k + m - 1) % m], b = ring[k], c = ring[(k + 1) % m];
-      if (orient(a, b, c) <= 0)
+      const double area2 = orient(a, b, c);
+      if (!(area2 > 0))
       {
         continue; // reflex or flat corner
       }
@@ -131,174 +249,230 @@ bool triangulatePolygon(
       for (std::size_t j = 0; j < m && empty; ++j)
       {
         const std::size_t q = ring[j];
-        if (q == a || q == b || q == c)
+        if (q == a || q == b || q == c || sameSpot(q, a) || sameSpot(q, b) || sameSpot(q, c))
         {
           continue;
         }
         empty = !(orient(a, b, q) >= 0 && orient(b, c, q) >= 0 && orient(c, a, q) >= 0);
       }
-      if (empty)
+      if (!empty)
       {
-        triangles.push_back({ corners[a], corners[b], corners[c] });
-        ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(k));
-        clipped = true;
+        continue;
+      }
+      const double longest =
+        std::max({ squaredLength(a, b), squaredLength(b, c), squaredLength(c, a) });
+      const double shape = area2 / longest;
+      if (shape > bestShape)
+      {
+        bestShape = shape;
+        best = k;
+      }
+      if (firstEar)
+      {
+        break;
       }
     }
-    if (!clipped)
+    if (best == m)
     {
-      return false; // self-intersecting or degenerate polygon
+      return false; // self-intersecting (or numerically degenerate) polygon
     }
+    const std::size_t a = ring[(best + m - 1) % m], b = ring[best], c = ring[(best + 1) % m];
+    triangles.push_back({ corners[a], corners[b], corners[c] });
+    ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(best));
+  }
+  if (!(orient(ring[0], ring[1], ring[2]) > 0))
+  {
+    return false;
   }
   triangles.push_back({ corners[ring[0]], corners[ring[1]], corners[ring[2]] });
-  for (const Triangle& t : triangles)
-  {
-    out.push_back(t);
-  }
+  out.insert(out.end(), triangles.begin(), triangles.end());
   return true;
 }
 
 OffReadResult readOff(std::istream& in)
 {
-  OffReadResult r;
   OffLines lines(in);
-  std::vector<std::string> words;
+  std::vector<std::string_view> words;
+  auto endOfFile = [&](const std::string& message) {
+    if (lines.failedToRead())
+    {
+      return failure("reading failed after line " + std::to_string(lines.number()));
+    }
+    return failure(message);
+  };
+
+  // header
   if (!lines.next(words))
   {
-    r.error = "the file is empty";
-    return r;
+    return endOfFile(lines.number() > 0 ? "the file is empty (it has only comments and blank lines)"
+                                        : "the file is empty");
   }
-  static const std::set<std::string> headers{ "OFF", "COFF", "NOFF", "CNOFF", "STOFF", "STCOFF",
-    "STNOFF", "STCNOFF" };
-  if (!headers.count(words[0]))
+  if (!isKnownHeader(words[0]))
   {
-    r.error = at(lines.number()) + "the file does not start with an OFF header (found '" +
-      words[0] + "'; 4OFF and nOFF are not supported)";
-    return r;
+    const std::string_view w = words[0];
+    if (w.size() > 3 && w.substr(w.size() - 3) == "OFF")
+    {
+      return failure(at(lines.number()) + "the header " + quoted(w) +
+        " is not supported (only OFF, COFF, NOFF, CNOFF and STOFF; no 4D or nOFF)");
+    }
+    return failure(at(lines.number()) + "expected the header OFF (or COFF, NOFF, CNOFF, STOFF) but found " +
+      quoted(w) + ": this is not an OFF file");
   }
   if (words.size() > 1 && words[1] == "BINARY")
   {
-    r.error = at(lines.number()) + "binary OFF files are not supported; save it as text OFF";
-    return r;
+    return failure(at(lines.number()) + "binary OFF files are not supported; save it as text OFF");
   }
-  std::vector<std::string> counts(words.begin() + 1, words.end());
-  if (counts.empty() && !lines.next(counts))
+
+  // counts, on the header line or the next one
+  std::vector<std::string_view> counts(words.begin() + 1, words.end());
+  if (counts.empty())
   {
-    r.error = "the file ends after the header, before the vertex and face counts";
-    return r;
+    if (!lines.next(words))
+    {
+      return endOfFile("the file ends after the header, before the vertex and face counts");
+    }
+    counts = words;
   }
-  long long nv = -1, nf = -1, ne = 0;
-  if (counts.size() < 2 || !parseIndex(counts[0], nv) || !parseIndex(counts[1], nf) ||
-    (counts.size() > 2 && !parseIndex(counts[2], ne)))
+  const int countsLine = lines.number();
+  if (counts.size() < 2 || counts.size() > 3)
   {
-    r.error = at(lines.number()) + "expected the counts 'vertices faces edges'";
-    return r;
+    return failure(at(countsLine) + "expected the counts 'vertices faces [edges]' but found " +
+      plural(static_cast<long long>(counts.size()), "value"));
   }
-  if (nv < 0 || nf < 0)
+  long long nv = 0, nf = 0, ne = 0;
+  const char* names[3] = { "vertex", "face", "edge" };
+  long long* values[3] = { &nv, &nf, &ne };
+  for (std::size_t k = 0; k < counts.size(); ++k)
   {
-    r.error = at(lines.number()) + "negative vertex or face count";
-    return r;
+    const Parsed p = parseNumber(counts[k], *values[k]);
+    if (p != Parsed::Ok)
+    {
+      return failure(at(countsLine) + "the " + names[k] + " count " + quoted(counts[k]) +
+        (p == Parsed::OutOfRange ? " is too large" : " is not a whole number"));
+    }
+    if (*values[k] < 0)
+    {
+      return failure(at(countsLine) + "the " + names[k] + " count is negative (" +
+        std::to_string(*values[k]) + ")");
+    }
   }
-  if (nv == 0 || nf == 0)
+  if (nv == 0)
   {
-    r.error = at(lines.number()) + "the header says " + std::to_string(nv) + " vertices and " +
-      std::to_string(nf) + " faces: there is no surface";
-    return r;
+    return failure(at(countsLine) + "header says 0 vertices: there is no surface");
   }
-  auto& s = r.data.surface;
-  s.points.reserve(static_cast<std::size_t>(std::min<long long>(nv, 100000000)));
+  if (nf == 0)
+  {
+    return failure(at(countsLine) + "header says 0 faces: there is no surface");
+  }
+  const std::string countsHint = " (line " + std::to_string(countsLine) + " says " +
+    std::to_string(nv) + (nv == 1 ? " vertex" : " vertices") + " and " + plural(nf, "face") + ")";
+
+  // vertices, one per line; extra values (colour, normal, texture) are ignored
+  OffReadResult r;
+  TriangleSurface& s = r.data.surface;
+  constexpr long long kReserveLimit = 1 << 20; // a lying header must not allocate
+  s.points.reserve(static_cast<std::size_t>(std::min(nv, kReserveLimit)));
   for (long long i = 0; i < nv; ++i)
   {
     if (!lines.next(words))
     {
-      r.error = "expected " + std::to_string(nv) + " vertices but the file ends after " +
-        std::to_string(i);
-      return r;
+      return endOfFile("expected " + std::to_string(nv) + " vertices but the file ends after " +
+        std::to_string(i) + countsHint);
     }
     if (words.size() < 3)
     {
-      r.error = at(lines.number()) + "vertex " + std::to_string(i) + " has fewer than 3 coordinates";
-      return r;
+      return failure(at(lines.number()) + "vertex " + std::to_string(i) + " has " +
+        plural(static_cast<long long>(words.size()), "coordinate") + ", expected 3");
     }
-    Vec3 p;
+    Vec3 point;
     for (int k = 0; k < 3; ++k)
     {
-      if (!parseDouble(words[k], p[k]))
+      const Parsed p = parseNumber(words[k], point[k]);
+      if (p == Parsed::OutOfRange)
       {
-        r.error = at(lines.number()) + "vertex " + std::to_string(i) +
-          " has a non-numeric coordinate '" + words[k] + "'";
-        return r;
+        return failure(at(lines.number()) + "vertex " + std::to_string(i) + " has a coordinate " +
+          quoted(words[k]) + " out of the range of double precision");
       }
-      if (!std::isfinite(p[k]))
+      if (p != Parsed::Ok)
       {
-        r.error = at(lines.number()) + "vertex " + std::to_string(i) + " has a " +
-          (std::isnan(p[k]) ? "NaN" : "infinite") + " coordinate";
-        return r;
+        return failure(at(lines.number()) + "vertex " + std::to_string(i) +
+          " has a non-numeric coordinate " + quoted(words[k]));
+      }
+      if (std::isnan(point[k]))
+      {
+        return failure(at(lines.number()) + "vertex " + std::to_string(i) + " has a NaN coordinate");
+      }
+      if (!std::isfinite(point[k]))
+      {
+        return failure(
+          at(lines.number()) + "vertex " + std::to_string(i) + " has an infinite coordinate");
       }
     }
-    s.points.push_back(p);
+    s.points.push_back(point);
   }
+
+  // faces: n i1 .. in [colour: up to 4 values]
+  s.triangles.reserve(static_cast<std::size_t>(std::min(nf, kReserveLimit)));
+  r.data.sourcePolygon.reserve(s.triangles.capacity());
+  std::vector<Index> corners;
   for (long long f = 0; f < nf; ++f)
   {
     if (!lines.next(words))
     {
-      r.error = "expected " + std::to_string(nf) + " faces but the file ends after " +
-        std::to_string(f);
-      return r;
+      return endOfFile("expected " + std::to_string(nf) + " faces but the file ends after " +
+        std::to_string(f) + countsHint);
     }
+    const std::string face = at(lines.number()) + "face " + std::to_string(f);
     long long n = 0;
-    if (!parseIndex(words[0], n))
+    if (parseNumber(words[0], n) != Parsed::Ok)
     {
-      r.error = at(lines.number()) + "face " + std::to_string(f) +
-        " does not start with its number of corners (found '" + words[0] + "')";
-      return r;
+      return failure(face + " does not start with its number of corners (found " +
+        quoted(words[0]) + ")" + countsHint);
     }
     if (n < 3)
     {
-      r.error = at(lines.number()) + "face " + std::to_string(f) + " has " + std::to_string(n) +
-        " corners; a face needs at least 3";
-      return r;
+      return failure(face + " has " + plural(n, "corner") + "; a face needs at least 3" + countsHint);
     }
-    if (static_cast<long long>(words.size()) < n + 1)
+    const long long listed = static_cast<long long>(words.size()) - 1;
+    if (listed < n)
     {
-      r.error = at(lines.number()) + "face " + std::to_string(f) + " announces " +
-        std::to_string(n) + " corners but lists " + std::to_string(words.size() - 1);
-      return r;
+      return failure(face + " announces " + std::to_string(n) + " corners but lists " +
+        std::to_string(listed) + " values" + countsHint);
     }
-    std::vector<Index> corners;
+    if (listed - n > 4)
+    {
+      return failure(face + " announces " + std::to_string(n) + " corners but has " +
+        std::to_string(listed) + " values after the count (at most 4 colour values may follow the corners)");
+    }
+    corners.clear();
     for (long long k = 1; k <= n; ++k)
     {
       long long index = 0;
-      if (!parseIndex(words[k], index))
+      const Parsed p = parseNumber(words[static_cast<std::size_t>(k)], index);
+      if (p != Parsed::Ok)
       {
-        r.error = at(lines.number()) + "face " + std::to_string(f) + " has a non-integer corner '" +
-          words[k] + "'";
-        return r;
+        return failure(face + " has a vertex index " + quoted(words[static_cast<std::size_t>(k)]) +
+          " that is not a whole number");
       }
       if (index < 0 || index >= nv)
       {
-        r.error = at(lines.number()) + "face " + std::to_string(f) + " refers to vertex " +
-          std::to_string(index) + ", but there are only " + std::to_string(nv) + " vertices";
-        return r;
+        return failure(face + " refers to vertex " + std::to_string(index) + ", but there " +
+          (nv == 1 ? "is only 1 vertex" : "are only " + std::to_string(nv) + " vertices") +
+          " (numbered from 0)");
       }
-      for (Index c : corners)
+      if (std::find(corners.begin(), corners.end(), index) != corners.end())
       {
-        if (c == index)
-        {
-          r.error = at(lines.number()) + "face " + std::to_string(f) + " repeats vertex " +
-            std::to_string(index);
-          return r;
-        }
+        return failure(face + " uses vertex " + std::to_string(index) + " twice");
       }
       corners.push_back(index);
     }
     for (std::size_t k = static_cast<std::size_t>(n) + 1; k < words.size(); ++k)
     {
       double colour = 0;
-      if (!parseDouble(words[k], colour))
+      if (parseNumber(words[k], colour) == Parsed::NotANumber)
       {
-        r.error = at(lines.number()) + "face " + std::to_string(f) + " has a non-numeric value '" +
-          words[k] + "' after its corners";
-        return r;
+        return failure(face + " has a non-numeric colour value " + quoted(words[k]) +
+          " after its corners");
       }
     }
     const std::size_t before = s.triangles.size();
@@ -308,11 +482,22 @@ OffReadResult readOff(std::istream& in)
     }
     else if (!triangulatePolygon(s.points, corners, s.triangles))
     {
-      r.error = at(lines.number()) + "face " + std::to_string(f) + " is a degenerate or " +
-        "self-intersecting polygon and cannot be triangulated";
-      return r;
+      return failure(face + " is a polygon of " + std::to_string(n) +
+        " corners with zero area or crossing edges; it cannot be triangulated");
     }
     r.data.sourcePolygon.insert(r.data.sourcePolygon.end(), s.triangles.size() - before, f);
+  }
+
+  // nothing may follow: more lines mean the counts are wrong
+  if (lines.next(words))
+  {
+    return failure(at(lines.number()) +
+      "unexpected data after the last face; the file has more vertices or faces than its header says" +
+      countsHint);
+  }
+  if (lines.failedToRead())
+  {
+    return failure("reading failed after line " + std::to_string(lines.number()));
   }
   r.data.polygonCount = static_cast<std::size_t>(nf);
   r.ok = true;
@@ -321,12 +506,17 @@ OffReadResult readOff(std::istream& in)
 
 OffReadResult readOffFile(const std::string& path)
 {
-  std::ifstream in(path);
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+  {
+    return failure(path + ": is a directory, not an OFF file");
+  }
+  std::ifstream in(path, std::ios::binary);
   if (!in)
   {
-    OffReadResult r;
-    r.error = path + ": cannot open the file (" + std::strerror(errno) + ")";
-    return r;
+    const int code = errno;
+    return failure(path + ": cannot open the file (" +
+      (code ? std::string(std::strerror(code)) : std::string("unknown reason")) + ")");
   }
   OffReadResult r = readOff(in);
   if (!r.ok)
@@ -334,5 +524,27 @@ OffReadResult readOffFile(const std::string& path)
     r.error = path + ": " + r.error;
   }
   return r;
+}
+
+void writeOff(std::ostream& out, const TriangleSurface& surface, const std::string& comment)
+{
+  const auto precision = out.precision(std::numeric_limits<double>::max_digits10);
+  out << "OFF\n";
+  if (!comment.empty())
+  {
+    std::string oneLine = comment;
+    std::replace(oneLine.begin(), oneLine.end(), '\n', ' ');
+    out << "# " << oneLine << "\n";
+  }
+  out << surface.points.size() << " " << surface.triangles.size() << " 0\n";
+  for (const Vec3& p : surface.points)
+  {
+    out << p[0] << " " << p[1] << " " << p[2] << "\n";
+  }
+  for (const Triangle& t : surface.triangles)
+  {
+    out << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+  }
+  out.precision(precision);
 }
 } // namespace ptm
