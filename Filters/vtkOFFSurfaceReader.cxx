@@ -15,7 +15,6 @@
 
 #include <exception>
 #include <fstream>
-#include <sstream>
 
 vtkStandardNewMacro(vtkOFFSurfaceReader);
 
@@ -24,25 +23,20 @@ vtkOFFSurfaceReader::vtkOFFSurfaceReader()
   this->SetNumberOfInputPorts(0);
 }
 
-bool vtkOFFSurfaceReader::CanReadFile(const char* fileName)
+int vtkOFFSurfaceReader::CanReadFile(const char* fileName)
 {
-  std::ifstream in(fileName ? fileName : "");
-  std::string word;
-  while (in >> word)
+  if (!fileName || !*fileName)
   {
-    if (word[0] == '#')
-    {
-      std::getline(in, word);
-      continue;
-    }
-    return word.size() >= 3 && word.compare(word.size() - 3, 3, "OFF") == 0;
+    return 0;
   }
-  return false;
+  std::ifstream in(fileName);
+  return in.is_open() ? 1 : 0;
 }
 
 int vtkOFFSurfaceReader::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
+  // Any number of pieces: piece 0 gets the surface, the others stay empty.
   outputVector->GetInformationObject(0)->Set(vtkAlgorithm::CAN_HANDLE_PIECE_REQUEST(), 1);
   return 1;
 }
@@ -54,53 +48,60 @@ int vtkOFFSurfaceReader::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
   this->LastError.clear();
-  if (this->FileName.empty())
-  {
-    this->LastError = "no file name was given";
-    vtkErrorMacro("OFF reader: " << this->LastError);
-    return 0;
-  }
+
   const int piece = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
     ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
     : 0;
   if (piece > 0)
   {
-    return 1; // the whole surface lives on piece 0
+    return 1; // the whole surface lives on piece 0; this piece is empty
   }
+  if (this->FileName.empty())
+  {
+    this->LastError = "no file name was given";
+    vtkErrorMacro(<< this->LastError);
+    return 0;
+  }
+
   ptm::OffReadResult r;
   try
   {
     r = ptm::readOffFile(this->FileName);
   }
-  catch (const std::exception& e)
+  catch (const std::exception& e) // only std::bad_alloc is expected here
   {
-    r.ok = false;
+    r = ptm::OffReadResult();
     r.error = this->FileName + ": " + e.what();
   }
   if (!r.ok)
   {
     this->LastError = r.error;
-    vtkErrorMacro("OFF reader: " << r.error);
+    vtkErrorMacro(<< r.error);
     return 0;
   }
+
   const ptm::TriangleSurface& s = r.data.surface;
+  const vtkIdType numberOfPoints = static_cast<vtkIdType>(s.points.size());
+  const vtkIdType numberOfTriangles = static_cast<vtkIdType>(s.triangles.size());
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(s.points.size()));
-  for (std::size_t i = 0; i < s.points.size(); ++i)
+  points->SetNumberOfPoints(numberOfPoints);
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
   {
-    points->SetPoint(static_cast<vtkIdType>(i), s.points[i].data());
+    points->SetPoint(i, s.points[static_cast<std::size_t>(i)].data());
   }
   vtkNew<vtkCellArray> polys;
-  polys->AllocateExact(static_cast<vtkIdType>(s.triangles.size()), 3 * static_cast<vtkIdType>(s.triangles.size()));
+  polys->AllocateExact(numberOfTriangles, 3 * numberOfTriangles);
   vtkNew<vtkIdTypeArray> source;
   source->SetName("SourcePolygonId");
-  source->SetNumberOfTuples(static_cast<vtkIdType>(s.triangles.size()));
-  for (std::size_t t = 0; t < s.triangles.size(); ++t)
+  source->SetNumberOfTuples(numberOfTriangles);
+  for (vtkIdType t = 0; t < numberOfTriangles; ++t)
   {
-    const vtkIdType ids[3] = { s.triangles[t][0], s.triangles[t][1], s.triangles[t][2] };
+    const ptm::Triangle& tri = s.triangles[static_cast<std::size_t>(t)];
+    const vtkIdType ids[3] = { static_cast<vtkIdType>(tri[0]), static_cast<vtkIdType>(tri[1]),
+      static_cast<vtkIdType>(tri[2]) };
     polys->InsertNextCell(3, ids);
-    source->SetValue(static_cast<vtkIdType>(t), r.data.sourcePolygon[t]);
+    source->SetValue(t, static_cast<vtkIdType>(r.data.sourcePolygon[static_cast<std::size_t>(t)]));
   }
   output->SetPoints(points);
   output->SetPolys(polys);
@@ -112,4 +113,5 @@ void vtkOFFSurfaceReader::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << this->FileName << "\n";
+  os << indent << "LastError: " << this->LastError << "\n";
 }

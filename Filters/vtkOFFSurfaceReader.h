@@ -7,8 +7,8 @@
  * the file each triangle came from. Comments, blank lines, colours and the
  * COFF/NOFF/CNOFF/STOFF variants are accepted (ptm::readOff). A malformed
  * file gives an error naming the file, the line and the problem, and an
- * empty output. In parallel, piece 0 holds the surface and the other pieces
- * are empty.
+ * empty output (RequestData returns 0). In parallel, piece 0 reads the file
+ * and holds the surface, and the other pieces are empty.
  */
 #ifndef vtkOFFSurfaceReader_h
 #define vtkOFFSurfaceReader_h
@@ -34,8 +34,13 @@ public:
   /// The message of the last failed read ("" after a good one).
   const char* GetLastError() const { return this->LastError.c_str(); }
 
-  /// True if the file starts with an OFF header (for the reader factory).
-  static bool CanReadFile(const char* fileName);
+  /**
+   * For ParaView's reader factory, which asks only about *.off files: 1 if
+   * the file can be opened. It does not look at the content on purpose, so
+   * that a malformed .off file is given to this reader, whose error says
+   * what is wrong, instead of ParaView's "no reader found".
+   */
+  virtual int CanReadFile(VTK_FILEPATH const char* fileName);
 
 protected:
   vtkOFFSurfaceReader();
