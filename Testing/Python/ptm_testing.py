@@ -7,9 +7,21 @@ import traceback
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
 from vtkmodules.vtkCommonCore import vtkIntArray
 
-PLUGIN = os.environ["PTM_PLUGIN"]
-DATA = os.environ["PTM_DATA"]
+# Set by CTest's ENVIRONMENT; a script may override them from its command
+# line with use_arguments().
+PLUGIN = os.environ.get("PTM_PLUGIN", "")
+DATA = os.environ.get("PTM_DATA", "")
 OUTPUT = os.environ.get("PTM_OUTPUT", ".")
+
+
+def use_arguments(argv):
+    """Reads `<plugin path> <data dir> [expected ranks]` from a test's
+    command line; returns the expected number of ranks (or None)."""
+    global PLUGIN, DATA
+    if len(argv) < 2:
+        raise SystemExit("usage: pvbatch SCRIPT.py PLUGIN_PATH DATA_DIR [RANKS]")
+    PLUGIN, DATA = argv[0], argv[1]
+    return int(argv[2]) if len(argv) > 2 else None
 
 
 def controller():
@@ -54,10 +66,14 @@ def barrier():
         c.Barrier()
 
 
-def load_plugin():
+def load_plugin(ns=None):
+    """Loads the plugin on this process (every rank in --symmetric mode).
+    Without ns the new proxies become functions of paraview.simple itself;
+    with ns=globals() they are defined in the calling script."""
     from paraview import simple
-    # without ns the new proxies become functions of paraview.simple itself
-    simple.LoadPlugin(PLUGIN, remote=False)
+    if not os.path.isfile(PLUGIN):
+        raise RuntimeError("plugin not found: %r" % PLUGIN)
+    simple.LoadPlugin(PLUGIN, remote=False, ns=ns)
 
 
 def run_checks(main):
