@@ -97,62 +97,18 @@ DecompositionResult decomposeVolumeBalanced(
     result.error = "the snap fraction must lie in [0, 0.5)";
     return result;
   }
-  if (input.triangles.empty() || input.points.size() < 4)
+  PreparedSurface prepared = prepareInputSurface(input, options.inputCheck);
+  result.inputCheck = prepared.counts;
+  result.warnings = prepared.warnings;
+  if (!prepared.ok)
   {
-    result.error = "the input surface is empty or has fewer than 4 points";
+    result.error = prepared.error;
     return result;
   }
-  for (const auto& p : input.points)
-  {
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-    {
-      result.error = "the input surface has a point with a NaN or infinite coordinate";
-      return result;
-    }
-  }
-  for (const auto& t : input.triangles)
-  {
-    for (Index v : t)
-    {
-      if (v < 0 || v >= static_cast<Index>(input.points.size()))
-      {
-        result.error = "a triangle refers to a point that does not exist";
-        return result;
-      }
-    }
-  }
-
-  TriangleSurface surface = input;
-  std::vector<Index> source;
-  std::size_t dropped = 0;
-  result.orientation.mergedPoints = mergeDuplicatePoints(surface, dropped, source);
-  OrientationResult oriented = orientShells(surface);
-  if (!oriented.ok)
-  {
-    result.error = oriented.error;
-    return result;
-  }
-  result.orientation = oriented.report;
-  result.orientation.droppedTriangles = dropped;
-  if (dropped > 0)
-  {
-    std::ostringstream msg;
-    msg << dropped << " degenerate triangles (repeating a corner) were removed";
-    result.warnings.push_back(msg.str());
-  }
-  if (result.orientation.reorientedTriangles > 0 || result.orientation.invertedShells > 0)
-  {
-    std::ostringstream msg;
-    msg << "orientation repaired: " << result.orientation.reorientedTriangles
-        << " triangles flipped to agree with their neighbours, "
-        << result.orientation.invertedShells << " inside-out shells inverted";
-    result.warnings.push_back(msg.str());
-  }
-  double totalVolume = 0;
-  for (std::size_t k = 0; k < result.orientation.shellVolume.size(); ++k)
-  {
-    totalVolume += result.orientation.shellVolume[k];
-  }
+  result.orientation = prepared.orientation;
+  const TriangleSurface& surface = prepared.surface;
+  const std::vector<Index>& source = prepared.sourceOfTriangle;
+  const double totalVolume = prepared.enclosedVolume;
   result.totalVolume = totalVolume;
   double edgeSum = 0;
   for (const auto& t : surface.triangles)
@@ -163,11 +119,6 @@ DecompositionResult decomposeVolumeBalanced(
     }
   }
   result.inputMeanEdgeLength = edgeSum / (3.0 * static_cast<double>(surface.triangles.size()));
-  if (!(totalVolume > 0))
-  {
-    result.error = "the surface encloses no volume";
-    return result;
-  }
 
   SurfaceComplex& c = result.complex;
   c.points = surface.points;

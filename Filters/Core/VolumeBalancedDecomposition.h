@@ -14,6 +14,7 @@
 #include "CutDirection.h"
 #include "HalfSpaceMeasure.h"
 #include "PlaneSplit.h"
+#include "SurfaceInputCheck.h"
 #include "SurfaceOrientation.h"
 
 #include <string>
@@ -35,6 +36,7 @@ struct DecompositionOptions
   BalanceCriterion criterion = BalanceCriterion::Volume;
   double balanceTolerance = 0.01; // allowed relative deviation of a subdomain from its target
   double snapFraction = 0.05;     // see PlaneSplit.h; balancing may lower it to 0.001, never to 0
+  InputCheckOptions inputCheck;   // see SurfaceInputCheck.h
 };
 
 struct DecompositionResult
@@ -43,6 +45,7 @@ struct DecompositionResult
   std::string error;
   std::vector<std::string> warnings;
   SurfaceComplex complex;
+  InputCheckCounts inputCheck;
   OrientationReport orientation;
   PlaneSplitStats splitStats;
   std::vector<double> subdomainVolume;  // divergence theorem over each closed subdomain

@@ -1,0 +1,454 @@
+#include "SurfaceInputCheck.h"
+
+#include "SelfIntersectionCheck.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+#include <set>
+#include <sstream>
+#include <unordered_map>
+
+namespace ptm
+{
+namespace
+{
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+std::string at(const Vec3& p)
+{
+  char buffer[96];
+  std::snprintf(buffer, sizeof(buffer), "(%.6g, %.6g, %.6g)", p[0], p[1], p[2]);
+  return buffer;
+}
+
+std::string plural(std::size_t n, const char* one, const char* many)
+{
+  std::ostringstream s;
+  s << n << " " << (n == 1 ? one : many);
+  return s.str();
+}
+
+std::uint64_t edgeKey(Index a, Index b, std::size_t pointCount)
+{
+  const Index lo = std::min(a, b), hi = std::max(a, b);
+  return static_cast<std::uint64_t>(lo) * static_cast<std::uint64_t>(pointCount) +
+    static_cast<std::uint64_t>(hi);
+}
+
+struct UnionFind
+{
+  std::vector<std::size_t> parent;
+  explicit UnionFind(std::size_t n)
+    : parent(n)
+  {
+    std::iota(parent.begin(), parent.end(), std::size_t{ 0 });
+  }
+  std::size_t find(std::size_t x)
+  {
+    while (parent[x] != x)
+    {
+      parent[x] = parent[parent[x]];
+      x = parent[x];
+    }
+    return x;
+  }
+  void unite(std::size_t a, std::size_t b) { parent[find(a)] = find(b); }
+};
+
+// Edge use counts of a triangle set, keyed by the unordered edge.
+struct EdgeTable
+{
+  std::unordered_map<std::uint64_t, std::vector<Index>> uses;
+  EdgeTable(const TriangleSurface& s)
+  {
+    uses.reserve(s.triangles.size() * 2);
+    for (std::size_t t = 0; t < s.triangles.size(); ++t)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        uses[edgeKey(s.triangles[t][c], s.triangles[t][(c + 1) % 3], s.points.size())].push_back(
+          static_cast<Index>(t));
+      }
+    }
+  }
+  const std::vector<Index>& of(Index a, Index b, std::size_t pointCount) const
+  {
+    return uses.at(edgeKey(a, b, pointCount));
+  }
+};
+} // namespace
+
+PreparedSurface prepareInputSurface(const TriangleSurface& input, const InputCheckOptions& options)
+{
+  PreparedSurface out;
+  InputCheckCounts& n = out.counts;
+  n.inputPoints = input.points.size();
+  n.inputTriangles = input.triangles.size();
+  std::vector<std::string> problems;
+  auto fail = [&]() {
+    std::ostringstream msg;
+    for (std::size_t i = 0; i < problems.size(); ++i)
+    {
+      msg << (i ? "; " : "") << problems[i];
+    }
+    out.error = msg.str();
+    out.ok = false;
+    return out;
+  };
+
+  // -- what makes every later check meaningless
+  if (input.triangles.empty())
+  {
+    problems.push_back("the input surface is empty (no triangles)");
+    return fail();
+  }
+  if (input.points.size() < 4)
+  {
+    problems.push_back("the input surface has " + plural(input.points.size(), "point", "points") +
+      "; a closed surface needs at least 4");
+    return fail();
+  }
+  Index firstNonFinite = -1;
+  for (std::size_t i = 0; i < input.points.size(); ++i)
+  {
+    const Vec3& p = input.points[i];
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      if (n.nonFinitePoints++ == 0)
+      {
+        firstNonFinite = static_cast<Index>(i);
+      }
+    }
+  }
+  if (n.nonFinitePoints > 0)
+  {
+    std::ostringstream msg;
+    msg << plural(n.nonFinitePoints, "point has", "points have")
+        << " a NaN or infinite coordinate (the first is point " << firstNonFinite << ")";
+    problems.push_back(msg.str());
+  }
+  Index firstBadTriangle = -1;
+  for (std::size_t t = 0; t < input.triangles.size(); ++t)
+  {
+    for (Index v : input.triangles[t])
+    {
+      if (v < 0 || v >= static_cast<Index>(input.points.size()))
+      {
+        if (n.badIndexTriangles++ == 0)
+        {
+          firstBadTriangle = static_cast<Index>(t);
+        }
+        break;
+      }
+    }
+  }
+  if (n.badIndexTriangles > 0)
+  {
+    std::ostringstream msg;
+    msg << plural(n.badIndexTriangles, "triangle refers", "triangles refer")
+        << " to a point that does not exist (the first is triangle " << firstBadTriangle << ")";
+    problems.push_back(msg.str());
+  }
+  if (!problems.empty())
+  {
+    return fail();
+  }
+
+  // -- safe repairs: merge, then drop collapsed, duplicated and zero-area triangles
+  TriangleSurface s = input;
+  std::vector<Index> source;
+  n.mergedPoints = mergeDuplicatePoints(s, n.collapsedTriangles, source, options.mergeTolerance);
+  if (n.mergedPoints > 0)
+  {
+    out.warnings.push_back("merged " + plural(n.mergedPoints, "duplicate point", "duplicate points"));
+  }
+  if (n.collapsedTriangles > 0)
+  {
+    out.warnings.push_back("removed " +
+      plural(n.collapsedTriangles, "triangle that repeats a corner",
+        "triangles that repeat a corner"));
+  }
+  std::vector<Triangle> removed; // duplicated and zero-area triangles, for the closure check
+  {
+    std::set<std::array<Index, 3>> seen;
+    std::vector<Triangle> kept;
+    std::vector<Index> keptSource;
+    Index firstDuplicate = -1, firstZeroArea = -1;
+    for (std::size_t t = 0; t < s.triangles.size(); ++t)
+    {
+      const Triangle& tri = s.triangles[t];
+      std::array<Index, 3> sorted = tri;
+      std::sort(sorted.begin(), sorted.end());
+      const Vec3 &a = s.points[tri[0]], &b = s.points[tri[1]], &c = s.points[tri[2]];
+      if (!seen.insert(sorted).second)
+      {
+        if (n.duplicateTriangles++ == 0)
+        {
+          firstDuplicate = source[t];
+        }
+        removed.push_back(tri);
+        continue;
+      }
+      if (CGAL::collinear(Kernel::Point_3(a[0], a[1], a[2]), Kernel::Point_3(b[0], b[1], b[2]),
+            Kernel::Point_3(c[0], c[1], c[2])))
+      {
+        if (n.zeroAreaTriangles++ == 0)
+        {
+          firstZeroArea = source[t];
+        }
+        removed.push_back(tri);
+        continue;
+      }
+      kept.push_back(tri);
+      keptSource.push_back(source[t]);
+    }
+    s.triangles = std::move(kept);
+    source = std::move(keptSource);
+    if (n.duplicateTriangles > 0)
+    {
+      std::ostringstream msg;
+      msg << "removed " << plural(n.duplicateTriangles, "duplicated triangle", "duplicated triangles")
+          << " (the first is input triangle " << firstDuplicate << ")";
+      out.warnings.push_back(msg.str());
+    }
+    if (n.zeroAreaTriangles > 0)
+    {
+      std::ostringstream msg;
+      msg << "removed " << plural(n.zeroAreaTriangles, "zero-area triangle", "zero-area triangles")
+          << " (three collinear corners; the first is input triangle " << firstZeroArea << ")";
+      out.warnings.push_back(msg.str());
+    }
+  }
+  if (s.triangles.empty())
+  {
+    problems.push_back("no triangle is left after removing degenerate and duplicated ones");
+    return fail();
+  }
+  if (!removed.empty())
+  {
+    // drop points only the removed triangles used, keeping the order
+    std::vector<Index> newIndex(s.points.size(), -1);
+    for (const Triangle& tri : s.triangles)
+    {
+      for (Index v : tri)
+      {
+        newIndex[v] = 0;
+      }
+    }
+    std::vector<Vec3> points;
+    for (std::size_t i = 0; i < s.points.size(); ++i)
+    {
+      if (newIndex[i] == 0)
+      {
+        newIndex[i] = static_cast<Index>(points.size());
+        points.push_back(s.points[i]);
+      }
+    }
+    for (Triangle& tri : s.triangles)
+    {
+      for (Index& v : tri)
+      {
+        v = newIndex[v];
+      }
+    }
+    for (Triangle& tri : removed)
+    {
+      for (Index& v : tri)
+      {
+        v = newIndex[v]; // -1 where the point went with it
+      }
+    }
+    s.points = std::move(points);
+  }
+
+  // -- topology: boundary edges, non-manifold edges, non-manifold vertices
+  const std::size_t pointCount = s.points.size();
+  const EdgeTable edges(s);
+  std::uint64_t firstBoundary = 0, firstNonManifold = 0;
+  std::size_t worstUse = 0;
+  for (const auto& [key, uses] : edges.uses)
+  {
+    if (uses.size() == 1 && n.boundaryEdges++ == 0)
+    {
+      firstBoundary = key;
+    }
+    else if (uses.size() > 2)
+    {
+      if (n.nonManifoldEdges++ == 0)
+      {
+        firstNonManifold = key;
+      }
+      worstUse = std::max(worstUse, uses.size());
+    }
+  }
+  auto edgeAt = [&](std::uint64_t key) {
+    const Index a = static_cast<Index>(key / pointCount), b = static_cast<Index>(key % pointCount);
+    return "from " + at(s.points[a]) + " to " + at(s.points[b]);
+  };
+  if (n.boundaryEdges > 0)
+  {
+    std::ostringstream msg;
+    msg << "the surface is open: " << plural(n.boundaryEdges, "boundary edge", "boundary edges")
+        << " (used by one triangle), e.g. " << edgeAt(firstBoundary);
+    if (!removed.empty())
+    {
+      std::size_t alongRemoved = 0;
+      for (const Triangle& tri : removed)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          if (tri[c] < 0 || tri[(c + 1) % 3] < 0)
+          {
+            continue;
+          }
+          auto it = edges.uses.find(edgeKey(tri[c], tri[(c + 1) % 3], pointCount));
+          alongRemoved += (it != edges.uses.end() && it->second.size() == 1) ? 1 : 0;
+        }
+      }
+      if (alongRemoved > 0)
+      {
+        msg << ", " << alongRemoved
+            << " of them along duplicated or zero-area triangles that cannot be removed without "
+               "opening the surface";
+      }
+    }
+    problems.push_back(msg.str());
+  }
+  if (n.nonManifoldEdges > 0)
+  {
+    std::ostringstream msg;
+    msg << plural(n.nonManifoldEdges, "non-manifold edge", "non-manifold edges")
+        << " (used by more than two triangles, up to " << worstUse << "), e.g. "
+        << edgeAt(firstNonManifold);
+    problems.push_back(msg.str());
+  }
+  // A vertex is manifold when its triangles form one fan: join the corners
+  // of two triangles that share a manifold edge at both ends of that edge,
+  // then count the groups of corners at every vertex.
+  {
+    UnionFind corners(3 * s.triangles.size());
+    auto cornerOf = [&](Index t, Index v) {
+      const Triangle& tri = s.triangles[t];
+      return static_cast<std::size_t>(3 * t + (tri[0] == v ? 0 : tri[1] == v ? 1 : 2));
+    };
+    for (const auto& [key, uses] : edges.uses)
+    {
+      if (uses.size() == 2)
+      {
+        const Index a = static_cast<Index>(key / pointCount), b = static_cast<Index>(key % pointCount);
+        corners.unite(cornerOf(uses[0], a), cornerOf(uses[1], a));
+        corners.unite(cornerOf(uses[0], b), cornerOf(uses[1], b));
+      }
+    }
+    std::vector<std::size_t> groupOf(pointCount, SIZE_MAX);
+    std::vector<char> counted(pointCount, 0);
+    Index firstVertex = -1;
+    for (std::size_t t = 0; t < s.triangles.size(); ++t)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        const Index v = s.triangles[t][c];
+        const std::size_t root = corners.find(3 * t + c);
+        if (groupOf[v] == SIZE_MAX)
+        {
+          groupOf[v] = root;
+        }
+        else if (groupOf[v] != root && !counted[v])
+        {
+          counted[v] = 1;
+          if (n.nonManifoldVertices++ == 0)
+          {
+            firstVertex = v;
+          }
+        }
+      }
+    }
+    // edges that are already non-manifold or open make their ends look
+    // non-manifold too; report vertices only when the edges are fine
+    if (n.nonManifoldVertices > 0 && n.nonManifoldEdges == 0 && n.boundaryEdges == 0)
+    {
+      problems.push_back(plural(n.nonManifoldVertices, "non-manifold vertex", "non-manifold vertices") +
+        " (where separate sheets of the surface touch in a point), e.g. at " +
+        at(s.points[firstVertex]));
+    }
+    else
+    {
+      n.nonManifoldVertices = 0;
+    }
+  }
+  if (!problems.empty())
+  {
+    return fail();
+  }
+
+  // -- orientation (repairable), then self-intersections (not)
+  OrientationResult oriented = orientShells(s);
+  if (!oriented.ok)
+  {
+    problems.push_back(oriented.error);
+    return fail();
+  }
+  out.orientation = oriented.report;
+  out.orientation.mergedPoints = n.mergedPoints;
+  out.orientation.droppedTriangles = n.collapsedTriangles + n.duplicateTriangles + n.zeroAreaTriangles;
+  if (out.orientation.reorientedTriangles > 0 || out.orientation.invertedShells > 0)
+  {
+    std::ostringstream msg;
+    msg << "orientation repaired: "
+        << plural(out.orientation.reorientedTriangles, "triangle", "triangles")
+        << " flipped to agree with their neighbours, "
+        << plural(out.orientation.invertedShells, "inside-out shell", "inside-out shells")
+        << " inverted";
+    out.warnings.push_back(msg.str());
+  }
+
+  if (options.checkSelfIntersections && s.triangles.size() <= options.selfIntersectionLimit)
+  {
+    const SelfIntersectionReport si = checkSelfIntersection(s, 1000);
+    n.selfIntersectionChecked = si.checked;
+    n.selfIntersectingPairs = si.pairs;
+    if (!si.checked)
+    {
+      out.warnings.push_back("the self-intersection check could not run: " + si.note);
+    }
+    else if (si.intersects)
+    {
+      const Triangle& a = s.triangles[si.firstTriangle];
+      std::ostringstream msg;
+      msg << "the surface intersects itself: "
+          << (si.pairs >= 1000 ? "at least " : "") << plural(si.pairs, "pair", "pairs")
+          << " of triangles cross, e.g. input triangles " << source[si.firstTriangle] << " and "
+          << source[si.secondTriangle] << " near " << at(s.points[a[0]]);
+      problems.push_back(msg.str());
+      return fail();
+    }
+  }
+  else if (options.checkSelfIntersections)
+  {
+    std::ostringstream msg;
+    msg << "self-intersections were not checked: the surface has " << s.triangles.size()
+        << " triangles, more than the check's limit of " << options.selfIntersectionLimit;
+    out.warnings.push_back(msg.str());
+  }
+
+  double volume = 0;
+  for (double v : out.orientation.shellVolume)
+  {
+    volume += v;
+  }
+  out.enclosedVolume = volume;
+  if (!(volume > 0))
+  {
+    problems.push_back("the surface encloses no volume");
+    return fail();
+  }
+  out.surface = std::move(s);
+  out.sourceOfTriangle = std::move(source);
+  out.ok = true;
+  return out;
+}
+} // namespace ptm
