@@ -368,8 +368,12 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
   if (crossing.checked && crossing.intersects)
   {
     r.tetgenCode = 3;
-    r.error = "the surface intersects itself (triangles " + std::to_string(crossing.firstTriangle) +
-      " and " + std::to_string(crossing.secondTriangle) + " cross): " + describeTetGenError(3);
+    const Vec3& near = s.points[s.triangles[crossing.firstTriangle][0]];
+    std::ostringstream msg;
+    msg << "the surface intersects itself: its triangles " << crossing.firstTriangle << " and "
+        << crossing.secondTriangle << " cross near (" << near[0] << ", " << near[1] << ", "
+        << near[2] << "); TetGen cannot mesh it";
+    r.error = msg.str();
     return r;
   }
 
@@ -552,5 +556,22 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
   }
   r.ok = true;
   return r;
+}
+TetMeshEstimate estimateTetMesh(double volume, double maximumVolume)
+{
+  TetMeshEstimate e;
+  if (volume > 0 && maximumVolume > 0)
+  {
+    e.tetrahedra = 2.0 * volume / maximumVolume;
+    e.bytes = 700.0 * e.tetrahedra;
+  }
+  return e;
+}
+
+double physicalMemoryBytes()
+{
+  const long pages = sysconf(_SC_PHYS_PAGES);
+  const long pageSize = sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && pageSize > 0 ? static_cast<double>(pages) * static_cast<double>(pageSize) : 0.0;
 }
 } // namespace ptm
