@@ -1,5 +1,6 @@
 #include "RankCollectives.h"
 
+#include "vtkAlgorithm.h"
 #include "vtkCommunicator.h"
 #include "vtkMultiProcessController.h"
 
@@ -127,8 +128,14 @@ bool agreeAllSucceeded(vtkMultiProcessController* c, bool localOk, const std::st
   return false;
 }
 
-bool agreeAnyAborted(vtkMultiProcessController* c, bool localAbort)
+bool agreeAnyAborted(vtkMultiProcessController* c, vtkAlgorithm* algorithm)
 {
+  const bool localAbort = algorithm->CheckAbort();
+  algorithm->SetAbortOutput(false);
+  if (localAbort)
+  {
+    algorithm->SetAbortExecute(0); // honoured now; the next update runs normally
+  }
   if (!parallel(c))
   {
     return localAbort;
@@ -136,6 +143,34 @@ bool agreeAnyAborted(vtkMultiProcessController* c, bool localAbort)
   int mine = localAbort ? 1 : 0, any = 0;
   c->AllReduce(&mine, &any, 1, vtkCommunicator::MAX_OP);
   return any != 0;
+}
+
+TriangleSurface wholeSurfaceOnEveryRank(vtkMultiProcessController* c, const TriangleSurface& local)
+{
+  if (!parallel(c))
+  {
+    return local;
+  }
+  // FNV-1a over the bytes of the points and triangles
+  std::uint64_t hash = 1469598103934665603ull;
+  auto mix = [&hash](const void* data, std::size_t bytes) {
+    const unsigned char* b = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < bytes; ++i)
+    {
+      hash = (hash ^ b[i]) * 1099511628211ull;
+    }
+  };
+  mix(local.points.data(), local.points.size() * sizeof(Vec3));
+  mix(local.triangles.data(), local.triangles.size() * sizeof(Triangle));
+  const std::vector<long long> mine{ static_cast<long long>(local.points.size()),
+    static_cast<long long>(local.triangles.size()), static_cast<long long>(hash) };
+  const std::vector<long long> all = gather(c, mine, nullptr);
+  bool identical = true;
+  for (std::size_t k = 3; k < all.size(); ++k)
+  {
+    identical = identical && all[k] == all[k % 3];
+  }
+  return identical ? local : allGatherSurface(c, local);
 }
 
 TriangleSurface allGatherSurface(vtkMultiProcessController* c, const TriangleSurface& local)

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+class vtkAlgorithm;
 class vtkMultiProcessController;
 
 namespace ptm
@@ -23,11 +24,24 @@ bool agreeAllSucceeded(
   vtkMultiProcessController* controller, bool localOk, const std::string& localError,
   std::string& message);
 
-// True on every rank if any rank asks to abort.
-bool agreeAnyAborted(vtkMultiProcessController* controller, bool localAbort);
+// True on every rank if any rank's `algorithm` was asked to abort
+// (vtkAlgorithm::CheckAbort). The caller then empties its outputs and returns
+// success on every rank. VTK's own abort path (AbortOutput, which marks the
+// outputs ABORTED) is switched off on every rank: it would be taken on the
+// asking rank only, and that rank alone would re-execute for the filter's
+// next output port request while the others wait in another collective.
+// The request is honoured (AbortExecute is reset); after an abort the
+// outputs stay empty until the filter is modified.
+bool agreeAnyAborted(vtkMultiProcessController* controller, vtkAlgorithm* algorithm);
 
 // Every rank's triangles, concatenated in rank order, on every rank.
 TriangleSurface allGatherSurface(vtkMultiProcessController* controller, const TriangleSurface& local);
+
+// The whole surface on every rank: the local one if every rank holds the
+// same surface (bit for bit: the cutter asks every rank's upstream for the
+// whole data), else every rank's piece concatenated (an upstream that
+// ignores the request and stays distributed).
+TriangleSurface wholeSurfaceOnEveryRank(vtkMultiProcessController* controller, const TriangleSurface& local);
 
 // Element-wise maximum / sum over ranks of a vector of the same length on every rank.
 void allReduceMax(vtkMultiProcessController* controller, std::vector<long long>& values);
