@@ -2,6 +2,7 @@
 
 #include "InterfaceTriangulation.h"
 #include "PolyDataConversion.h"
+#include "PropertyChecks.h"
 #include "RankCollectives.h"
 #include "SurfaceComplexArrays.h"
 
@@ -17,6 +18,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
+#include <cmath>
 #include <exception>
 #include <map>
 #include <sstream>
@@ -65,6 +67,18 @@ int vtkInterfaceTriangulator::RequestData(
   std::string message;
 
   this->UpdateProgress(0.0);
+  // nonsense property values (the same on every rank, so every rank stops)
+  ptm::PropertyChecks checks("InterfaceTriangulator");
+  checks.Require(this->MinimumAngle >= 1.0 && this->MinimumAngle <= 34.0, "MinimumAngle",
+    "lie in [1, 34] degrees", this->MinimumAngle);
+  checks.Require(this->MaximumEdgeLength >= 0.0 && std::isfinite(this->MaximumEdgeLength),
+    "MaximumEdgeLength", "be 0 (automatic) or a positive length", this->MaximumEdgeLength);
+  if (!checks.Ok())
+  {
+    vtkErrorMacro(<< checks.Message());
+    output->Initialize();
+    return 0;
+  }
   this->SetProgressText("Reading the complex");
   ptm::ComplexPiece piece;
   std::string localError;
@@ -153,7 +167,7 @@ int vtkInterfaceTriangulator::RequestData(
     output->Initialize();
     return 0;
   }
-  if (ptm::agreeAnyAborted(controller, this->CheckAbort()))
+  if (ptm::agreeAnyAborted(controller, this))
   {
     output->Initialize();
     return 1;

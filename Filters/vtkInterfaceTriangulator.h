@@ -37,7 +37,7 @@ public:
   ///@{
   /// Smallest angle allowed in an interface triangle, in degrees (default
   /// 20.7, the bound with guaranteed termination; up to about 30 works).
-  vtkSetClampMacro(MinimumAngle, double, 1.0, 34.0);
+  vtkSetMacro(MinimumAngle, double);
   vtkGetMacro(MinimumAngle, double);
   ///@}
 
@@ -45,7 +45,7 @@ public:
   /// Longest edge allowed; 0 (default) derives it from the spacing of the
   /// loop's own points, so interface triangles match the surface resolution
   /// and grade smoothly inward.
-  vtkSetClampMacro(MaximumEdgeLength, double, 0.0, 1e300);
+  vtkSetMacro(MaximumEdgeLength, double);
   vtkGetMacro(MaximumEdgeLength, double);
   ///@}
 

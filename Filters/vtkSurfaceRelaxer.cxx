@@ -2,6 +2,7 @@
 
 #include "ComplexGather.h"
 #include "PolyDataConversion.h"
+#include "PropertyChecks.h"
 #include "RankCollectives.h"
 #include "SurfaceComplexArrays.h"
 #include "SurfaceRelaxation.h"
@@ -60,7 +61,7 @@ int vtkSurfaceRelaxer::RequestData(
     return true;
   };
   auto abortedEverywhere = [&]() {
-    if (!ptm::agreeAnyAborted(controller, this->CheckAbort()))
+    if (!ptm::agreeAnyAborted(controller, this))
     {
       return false;
     }
@@ -69,6 +70,22 @@ int vtkSurfaceRelaxer::RequestData(
   };
 
   this->UpdateProgress(0.0);
+  // nonsense property values (the same on every rank, so every rank stops)
+  ptm::PropertyChecks checks("SurfaceRelaxer");
+  checks.Require(this->NumberOfIterations >= 0 && this->NumberOfIterations <= 1000,
+    "NumberOfIterations", "lie in [0, 1000]", this->NumberOfIterations);
+  checks.Require(this->RelaxationFactor >= 0.01 && this->RelaxationFactor <= 1.0,
+    "RelaxationFactor", "lie in [0.01, 1]", this->RelaxationFactor);
+  checks.Require(this->FeatureAngle >= 0.0 && this->FeatureAngle <= 180.0, "FeatureAngle",
+    "lie in [0, 180] degrees", this->FeatureAngle);
+  checks.Require(this->Region == NEAR_CUTS || this->Region == EVERYWHERE, "Region",
+    "be 0 (NearCuts) or 1 (Everywhere)", this->Region);
+  if (!checks.Ok())
+  {
+    vtkErrorMacro(<< checks.Message());
+    output->Initialize();
+    return 0;
+  }
   this->SetProgressText("Gathering the complex");
   ptm::ComplexPiece piece;
   if (!ptm::complexFromPolyData(input, piece, localError))

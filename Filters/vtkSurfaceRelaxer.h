@@ -38,25 +38,25 @@ public:
 
   ///@{
   /// Smoothing sweeps over the nodes (default 10; 0 passes the complex through).
-  vtkSetClampMacro(NumberOfIterations, int, 0, 1000);
+  vtkSetMacro(NumberOfIterations, int);
   vtkGetMacro(NumberOfIterations, int);
   ///@}
 
   ///@{
   /// Fraction of the way to the neighbours' centroid a node moves per sweep (default 0.5).
-  vtkSetClampMacro(RelaxationFactor, double, 0.01, 1.0);
+  vtkSetMacro(RelaxationFactor, double);
   vtkGetMacro(RelaxationFactor, double);
   ///@}
 
   ///@{
   /// Surface edges whose normals differ by more than this (degrees, default 30) are feature lines.
-  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
+  vtkSetMacro(FeatureAngle, double);
   vtkGetMacro(FeatureAngle, double);
   ///@}
 
   ///@{
   /// NearCuts (default): the three rings of nodes around contours and interfaces; Everywhere.
-  vtkSetClampMacro(Region, int, NEAR_CUTS, EVERYWHERE);
+  vtkSetMacro(Region, int);
   vtkGetMacro(Region, int);
   ///@}
 
