@@ -2,6 +2,7 @@
 
 #include "GlobalMeshNumbering.h"
 #include "PolyDataConversion.h"
+#include "PropertyChecks.h"
 #include "RankCollectives.h"
 #include "SubdomainSurface.h"
 #include "SurfaceComplexArrays.h"
@@ -27,6 +28,7 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <exception>
@@ -89,6 +91,21 @@ int vtkParallelTetMesher::RequestData(
   };
 
   this->UpdateProgress(0.0);
+  // nonsense property values (the same on every rank, so every rank stops)
+  ptm::PropertyChecks checks("ParallelTetMesher");
+  checks.Require(this->RadiusEdgeRatio >= 1.0 && this->RadiusEdgeRatio <= 100.0,
+    "RadiusEdgeRatio", "lie in [1, 100]", this->RadiusEdgeRatio);
+  checks.Require(this->MaximumVolume >= 0.0 && std::isfinite(this->MaximumVolume),
+    "MaximumVolume", "be 0 (automatic) or a positive volume", this->MaximumVolume);
+  checks.Require(this->MinimumDihedralAngle >= 0.0 && this->MinimumDihedralAngle <= 30.0,
+    "MinimumDihedralAngle", "lie in [0, 30] degrees", this->MinimumDihedralAngle);
+  if (!checks.Ok())
+  {
+    vtkErrorMacro(<< checks.Message());
+    output->Initialize();
+    boundary->Initialize();
+    return 0;
+  }
   this->SetProgressText("Extracting subdomain surfaces");
   ptm::ComplexPiece piece;
   if (!ptm::complexFromPolyData(input, piece, localError))
@@ -119,6 +136,35 @@ int vtkParallelTetMesher::RequestData(
     : std::pow(piece.inputMeanEdgeLength, 3) / (6.0 * std::sqrt(2.0));
   options.minimumDihedralAngle = this->MinimumDihedralAngle;
   options.extraSwitches = this->ExtraSwitches;
+
+  // Refuse a size that cannot fit: the estimate of the largest rank's mesh
+  // against this machine's memory, the same decision on every rank.
+  {
+    std::vector<double> rankVolume(ptm::rankCount(controller), 0.0);
+    for (int s = 0; s < K; ++s)
+    {
+      if (piece.subdomainRank[s] >= 0 && piece.subdomainRank[s] < static_cast<int>(rankVolume.size()))
+      {
+        rankVolume[piece.subdomainRank[s]] += piece.subdomainVolume[s];
+      }
+    }
+    const auto heaviest = std::max_element(rankVolume.begin(), rankVolume.end());
+    const ptm::TetMeshEstimate estimate = ptm::estimateTetMesh(*heaviest, options.maximumVolume);
+    std::vector<long long> smallestMemory{ static_cast<long long>(ptm::physicalMemoryBytes()) };
+    ptm::allReduceMin(controller, smallestMemory);
+    const double memory = static_cast<double>(smallestMemory[0]);
+    if (memory > 0 && estimate.bytes > memory)
+    {
+      std::ostringstream why;
+      why.precision(3);
+      why << "the requested size (MaximumVolume " << options.maximumVolume << ") would give about "
+          << estimate.tetrahedra << " tetrahedra on rank "
+          << (heaviest - rankVolume.begin()) << ", about " << estimate.bytes / 1e9
+          << " GB, more than this machine's " << memory / 1e9
+          << " GB of memory; use a larger size or more ranks";
+      return fail(why.str());
+    }
+  }
   std::vector<ptm::SubdomainSurface> surfaces(mine.size());
   std::vector<ptm::TetMesh> meshes(mine.size());
   std::vector<double> seconds(mine.size(), 0.0);
@@ -160,7 +206,7 @@ int vtkParallelTetMesher::RequestData(
   {
     return fail(message);
   }
-  if (ptm::agreeAnyAborted(controller, this->CheckAbort()))
+  if (ptm::agreeAnyAborted(controller, this))
   {
     output->Initialize();
     boundary->Initialize();

@@ -43,7 +43,7 @@ public:
 
   ///@{
   /// TetGen's radius-edge ratio bound (-q), default 2.0; must exceed 1.
-  vtkSetClampMacro(RadiusEdgeRatio, double, 1.0, 100.0);
+  vtkSetMacro(RadiusEdgeRatio, double);
   vtkGetMacro(RadiusEdgeRatio, double);
   ///@}
 
@@ -52,13 +52,13 @@ public:
   /// regular tetrahedron whose edge is the mean edge length of the input
   /// surface (recorded by the cutter), the same for every subdomain, so the
   /// mesh density does not depend on the number of subdomains.
-  vtkSetClampMacro(MaximumVolume, double, 0.0, 1e300);
+  vtkSetMacro(MaximumVolume, double);
   vtkGetMacro(MaximumVolume, double);
   ///@}
 
   ///@{
   /// Smallest dihedral angle TetGen should aim for (degrees, -q ratio/angle); 0 = TetGen's default.
-  vtkSetClampMacro(MinimumDihedralAngle, double, 0.0, 30.0);
+  vtkSetMacro(MinimumDihedralAngle, double);
   vtkGetMacro(MinimumDihedralAngle, double);
   ///@}
 
