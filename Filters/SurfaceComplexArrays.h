@@ -21,6 +21,7 @@ constexpr const char* SubdomainMeasure = "SubdomainMeasure";       // double per
 constexpr const char* GlobalPointCount = "GlobalPointCount";       // vtkIdType: points of the whole complex
 constexpr const char* BalanceCriterionName = "BalanceCriterion";   // string
 constexpr const char* MaximumImbalance = "MaximumImbalance";       // double
+constexpr const char* InputRepairs = "InputRepairs";               // strings: repairs of the input check
 constexpr const char* InputMeanEdgeLength = "InputMeanEdgeLength"; // double: the input surface's resolution
 } // namespace ptm::arrays
 #endif

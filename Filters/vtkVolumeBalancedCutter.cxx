@@ -1,6 +1,7 @@
 #include "vtkVolumeBalancedCutter.h"
 
 #include "PolyDataConversion.h"
+#include "PropertyChecks.h"
 #include "RankCollectives.h"
 #include "SubdomainAssignment.h"
 #include "SurfaceComplexArrays.h"
@@ -41,6 +42,20 @@ int vtkVolumeBalancedCutter::RequestInformation(
   return 1;
 }
 
+// Every rank asks its upstream for the whole surface (piece 0 of 1): a reader
+// then reads the file on every rank, so a bad file fails on every rank alike.
+// (When an upstream fails on one rank only, VTK's executive skips this
+// filter on that rank alone and the others would wait for it forever.)
+int vtkVolumeBalancedCutter::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  return 1;
+}
+
 int vtkVolumeBalancedCutter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -52,10 +67,24 @@ int vtkVolumeBalancedCutter::RequestData(
   std::string message;
 
   this->UpdateProgress(0.0);
+  // nonsense property values: the same on every rank, so every rank stops
+  ptm::PropertyChecks checks("VolumeBalancedCutter");
+  checks.Require(this->NumberOfSubdomains >= 0 && this->NumberOfSubdomains <= 1000000,
+    "NumberOfSubdomains", "be 0 (one per rank) or between 1 and 1000000", this->NumberOfSubdomains);
+  checks.Require(this->BalanceTolerance >= 1e-6 && this->BalanceTolerance <= 0.5,
+    "BalanceTolerance", "lie in [1e-6, 0.5]", this->BalanceTolerance);
+  checks.Require(this->SelfIntersectionCheckLimit >= 0, "SelfIntersectionCheckLimit",
+    "be a number of triangles, 0 or more", this->SelfIntersectionCheckLimit);
+  if (!checks.Ok())
+  {
+    vtkErrorMacro(<< checks.Message());
+    output->Initialize();
+    return 0;
+  }
   this->SetProgressText("Gathering the surface");
   const ptm::TriangleSurface local = ptm::triangleSurfaceFromPolyData(input);
-  const ptm::TriangleSurface surface = ptm::allGatherSurface(controller, local);
-  if (ptm::agreeAnyAborted(controller, this->CheckAbort()))
+  const ptm::TriangleSurface surface = ptm::wholeSurfaceOnEveryRank(controller, local);
+  if (ptm::agreeAnyAborted(controller, this))
   {
     output->Initialize();
     return 1;
@@ -69,6 +98,9 @@ int vtkVolumeBalancedCutter::RequestData(
   options.direction = static_cast<ptm::CutDirection>(this->Direction);
   options.criterion = static_cast<ptm::BalanceCriterion>(this->BalanceCriterion);
   options.balanceTolerance = this->BalanceTolerance;
+  options.inputCheck.checkSelfIntersections = this->CheckSelfIntersections != 0;
+  options.inputCheck.selfIntersectionLimit =
+    static_cast<std::size_t>(this->SelfIntersectionCheckLimit);
 
   this->SetProgressText("Cutting");
   ptm::DecompositionResult result;
@@ -82,7 +114,7 @@ int vtkVolumeBalancedCutter::RequestData(
     else
     {
       result = ptm::decomposeVolumeBalanced(surface, options);
-      localError = result.ok ? "" : result.error;
+      localError = result.ok ? "" : "the input surface cannot be meshed: " + result.error;
     }
   }
   catch (const std::exception& e)
@@ -102,7 +134,7 @@ int vtkVolumeBalancedCutter::RequestData(
       vtkWarningMacro(<< warning);
     }
   }
-  if (ptm::agreeAnyAborted(controller, this->CheckAbort()))
+  if (ptm::agreeAnyAborted(controller, this))
   {
     output->Initialize();
     return 1;
@@ -140,6 +172,13 @@ int vtkVolumeBalancedCutter::RequestData(
   imbalance->SetName(ptm::arrays::MaximumImbalance);
   imbalance->InsertNextValue(result.maximumImbalance);
   fd->AddArray(imbalance);
+  vtkNew<vtkStringArray> repairs; // what the input check repaired, as warned
+  repairs->SetName(ptm::arrays::InputRepairs);
+  for (const std::string& warning : result.warnings)
+  {
+    repairs->InsertNextValue(warning);
+  }
+  fd->AddArray(repairs);
 
   this->UpdateProgress(1.0);
   return 1;
@@ -153,5 +192,7 @@ void vtkVolumeBalancedCutter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Direction: " << this->Direction << "\n";
   os << indent << "BalanceCriterion: " << this->BalanceCriterion << "\n";
   os << indent << "BalanceTolerance: " << this->BalanceTolerance << "\n";
+  os << indent << "CheckSelfIntersections: " << this->CheckSelfIntersections << "\n";
+  os << indent << "SelfIntersectionCheckLimit: " << this->SelfIntersectionCheckLimit << "\n";
   os << indent << "Controller: " << this->Controller << "\n";
 }

@@ -54,7 +54,7 @@ public:
   /// Number of subdomains K; 0 (default) means one per MPI rank. More than
   /// the ranks is over-decomposition: subdomains are then assigned to ranks
   /// so that each rank's total measure is balanced.
-  vtkSetClampMacro(NumberOfSubdomains, int, 0, 1000000);
+  vtkSetMacro(NumberOfSubdomains, int);
   vtkGetMacro(NumberOfSubdomains, int);
   ///@}
 
@@ -79,8 +79,23 @@ public:
 
   ///@{
   /// Allowed relative deviation of a subdomain from its target (default 0.01).
-  vtkSetClampMacro(BalanceTolerance, double, 1e-6, 0.5);
+  vtkSetMacro(BalanceTolerance, double);
   vtkGetMacro(BalanceTolerance, double);
+  ///@}
+
+  ///@{
+  /// Check the input for self-intersections with CGAL's exact predicates
+  /// before cutting (default on). Other input checks always run.
+  vtkSetMacro(CheckSelfIntersections, vtkTypeBool);
+  vtkGetMacro(CheckSelfIntersections, vtkTypeBool);
+  vtkBooleanMacro(CheckSelfIntersections, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /// Above this many input triangles the self-intersection check is skipped
+  /// with a warning (default 2,000,000).
+  vtkSetMacro(SelfIntersectionCheckLimit, vtkIdType);
+  vtkGetMacro(SelfIntersectionCheckLimit, vtkIdType);
   ///@}
 
   ///@{
@@ -94,6 +109,7 @@ protected:
   ~vtkVolumeBalancedCutter() override;
 
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int NumberOfSubdomains = 0;
@@ -101,6 +117,8 @@ protected:
   int Direction = INERTIA;
   int BalanceCriterion = VOLUME;
   double BalanceTolerance = 0.01;
+  vtkTypeBool CheckSelfIntersections = 1;
+  vtkIdType SelfIntersectionCheckLimit = 2000000;
   vtkMultiProcessController* Controller = nullptr;
 
 private:
