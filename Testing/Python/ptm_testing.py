@@ -93,21 +93,34 @@ def run_checks(main):
 
 
 class ErrorCatcher:
-    """Collects the messages of ErrorEvents of a VTK object."""
+    """Collects the messages of ErrorEvents (and, with warnings=True, of
+    WarningEvents) of a VTK object."""
 
-    def __init__(self, vtk_object):
+    def __init__(self, vtk_object, warnings=False):
         from vtkmodules.util.misc import calldata_type
         from vtkmodules.vtkCommonCore import VTK_STRING
 
         self.messages = []
+        self.errors = []
 
         @calldata_type(VTK_STRING)
         def on_error(caller, event, message):
             self.messages.append(str(message))
+            self.errors.append(str(message))
 
-        self._callback = on_error  # keep it alive
+        @calldata_type(VTK_STRING)
+        def on_warning(caller, event, message):
+            self.messages.append(str(message))
+
+        self._callbacks = (on_error, on_warning)  # keep them alive
         vtk_object.AddObserver("ErrorEvent", on_error)
+        if warnings:
+            vtk_object.AddObserver("WarningEvent", on_warning)
 
     @property
     def text(self):
         return "\n".join(self.messages)
+
+    @property
+    def errors_text(self):
+        return "\n".join(self.errors)
