@@ -18,8 +18,8 @@ PACKAGES=(
   libtet1.5-dev libcgal-dev libeigen3-dev libgmp-dev libmpfr-dev
   # MPI
   libopenmpi-dev openmpi-bin
-  # tests
-  libgtest-dev
+  # tests; clang for libFuzzer and the sanitizer build; Xvfb for the GUI screenshot
+  libgtest-dev clang libclang-rt-14-dev xvfb xauth
   # comparison peers and test geometry
   gmsh tetgen python3-meshio python3-matplotlib time
 )
