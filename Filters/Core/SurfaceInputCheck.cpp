@@ -441,6 +441,21 @@ PreparedSurface prepareInputSurface(const TriangleSurface& input, const InputChe
     volume += v;
   }
   out.enclosedVolume = volume;
+  if (!std::isfinite(volume))
+  {
+    // The divergence sums have terms of |p|^3: beyond about 1e102 they
+    // overflow, and every later volume (balance, subdomains) would be inf or NaN.
+    double largest = 0;
+    for (const Vec3& p : s.points)
+    {
+      largest = std::max({ largest, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2]) });
+    }
+    char buffer[64];
+    std::snprintf(buffer, sizeof(buffer), "%.3g", largest);
+    problems.push_back(std::string("the enclosed volume overflows double precision (coordinates up to ") +
+      buffer + "); scale the surface down");
+    return fail();
+  }
   if (!(volume > 0))
   {
     problems.push_back("the surface encloses no volume");

@@ -19,7 +19,8 @@
 //                         self-intersections (CGAL, exact predicates; checked
 //                         when the surface has at most `selfIntersectionLimit`
 //                         triangles), shells that cannot be oriented, no
-//                         enclosed volume.
+//                         enclosed volume, a volume too large for double
+//                         precision (coordinates beyond about 1e102).
 //
 // Deterministic: the same input gives the same output on every rank.
 #include "SurfaceOrientation.h"
