@@ -219,8 +219,10 @@ double HalfSpaceMeasure::offsetForFraction(double fraction, double relativeToler
   if (this->Criterion != BalanceCriterion::Volume)
   {
     const std::size_t n = this->SortedValues.size();
-    if (n == 0)
+    if (n < 2)
     {
+      // no two neighbouring values to put the plane between (with one, the
+      // clamp below would make k = 0 and read before the first value)
       return 0.5 * (this->MinOffset + this->MaxOffset);
     }
     std::size_t k = static_cast<std::size_t>(std::llround(target));
