@@ -2,11 +2,15 @@
 // switches the ParallelTetMesher uses per subdomain (ptm::meshClosedSurface):
 // the reference the parallel pipeline is measured against.
 //
-//   serial_tetgen SURFACE.off [radius-edge-ratio] [maximum-volume]
+//   serial_tetgen SURFACE.off [radius-edge-ratio] [maximum-volume] [MESH.vtk]
 //
-// Prints one JSON object: tetrahedra, points, seconds, the peak resident
-// memory of this process and of the TetGen process, minimum dihedral angle
-// and share of tetrahedra under 10 degrees.
+// Prints one JSON object: tetrahedra, points, seconds (TetGen alone) and the
+// seconds of every step from reading to writing, the peak resident memory of
+// this process and of the TetGen process, minimum dihedral angle and share of
+// tetrahedra under 10 degrees. With MESH.vtk the tetrahedra are written as a
+// binary legacy VTK file, so the benchmark driver can measure every peer's
+// output with the same code (mesh_quality.py) and the time covers reading to
+// written output, like the pipeline's.
 #include "OffFormat.h"
 #include "SurfaceOrientation.h"
 #include "TetGenSubdomainMesher.h"
@@ -17,7 +21,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <string>
 
 namespace
 {
@@ -48,21 +56,74 @@ double minimumDihedral(const ptm::TetMesh& m, const std::array<ptm::Index, 4>& t
   }
   return smallest;
 }
+
+// Binary legacy VTK is big-endian whatever the machine.
+template <typename T>
+void writeBigEndian(std::ofstream& out, T value)
+{
+  static const std::uint16_t one = 1;
+  static const bool littleEndian = *reinterpret_cast<const unsigned char*>(&one) == 1;
+  char bytes[sizeof(T)];
+  std::memcpy(bytes, &value, sizeof(T));
+  if (littleEndian)
+  {
+    std::reverse(bytes, bytes + sizeof(T));
+  }
+  out.write(bytes, sizeof(T));
+}
+
+bool writeLegacyVtk(const std::string& path, const ptm::TetMesh& m)
+{
+  std::ofstream out(path, std::ios::binary);
+  out << "# vtk DataFile Version 3.0\nserial_tetgen\nBINARY\nDATASET UNSTRUCTURED_GRID\n";
+  out << "POINTS " << m.points.size() << " double\n";
+  for (const auto& p : m.points)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      writeBigEndian<double>(out, p[c]);
+    }
+  }
+  out << "\nCELLS " << m.tets.size() << " " << 5 * m.tets.size() << "\n";
+  for (const auto& t : m.tets)
+  {
+    writeBigEndian<std::int32_t>(out, 4);
+    for (int c = 0; c < 4; ++c)
+    {
+      writeBigEndian<std::int32_t>(out, static_cast<std::int32_t>(t[c]));
+    }
+  }
+  out << "\nCELL_TYPES " << m.tets.size() << "\n";
+  for (std::size_t i = 0; i < m.tets.size(); ++i)
+  {
+    writeBigEndian<std::int32_t>(out, 10); // VTK_TETRA
+  }
+  out << "\n";
+  return static_cast<bool>(out);
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 } // namespace
 
 int main(int argc, char** argv)
 {
   if (argc < 2)
   {
-    std::fprintf(stderr, "usage: serial_tetgen SURFACE.off [radius-edge-ratio] [maximum-volume]\n");
+    std::fprintf(stderr, "usage: serial_tetgen SURFACE.off [radius-edge-ratio] [maximum-volume] [MESH.vtk]\n");
     return 2;
   }
+  const auto readStart = std::chrono::steady_clock::now();
   ptm::OffReadResult in = ptm::readOffFile(argv[1]);
   if (!in.ok)
   {
     std::fprintf(stderr, "serial_tetgen: %s\n", in.error.c_str());
     return 1;
   }
+  const double readSeconds = secondsSince(readStart);
+  const auto orientStart = std::chrono::steady_clock::now();
   ptm::TriangleSurface surface = in.data.surface;
   std::size_t dropped = 0;
   std::vector<ptm::Index> source;
@@ -73,6 +134,7 @@ int main(int argc, char** argv)
     std::fprintf(stderr, "serial_tetgen: %s\n", oriented.error.c_str());
     return 1;
   }
+  const double orientSeconds = secondsSince(orientStart);
   ptm::TetMeshingOptions options;
   if (argc > 2)
   {
@@ -90,6 +152,17 @@ int main(int argc, char** argv)
     std::fprintf(stderr, "serial_tetgen: %s\n", r.error.c_str());
     return 1;
   }
+  double writeSeconds = 0;
+  if (argc > 4)
+  {
+    const auto writeStart = std::chrono::steady_clock::now();
+    if (!writeLegacyVtk(argv[4], r.mesh))
+    {
+      std::fprintf(stderr, "serial_tetgen: cannot write %s\n", argv[4]);
+      return 1;
+    }
+    writeSeconds = secondsSince(writeStart);
+  }
   double smallest = 180;
   std::size_t below10 = 0;
   for (const auto& t : r.mesh.tets)
@@ -102,9 +175,11 @@ int main(int argc, char** argv)
   getrusage(RUSAGE_SELF, &self);
   getrusage(RUSAGE_CHILDREN, &children);
   std::printf("{\"tetrahedra\": %zu, \"points\": %zu, \"seconds\": %.3f, \"switches\": \"%s\", "
+              "\"read_seconds\": %.3f, \"orient_seconds\": %.3f, \"write_seconds\": %.3f, "
               "\"peak_rss_mb_driver\": %.1f, \"peak_rss_mb_tetgen\": %.1f, "
               "\"minimum_dihedral_angle_degrees\": %.3f, \"share_below_10_degrees\": %.6f}\n",
-    r.mesh.tets.size(), r.mesh.points.size(), seconds, r.switchesUsed.c_str(), self.ru_maxrss / 1024.0,
+    r.mesh.tets.size(), r.mesh.points.size(), seconds, r.switchesUsed.c_str(), readSeconds, orientSeconds,
+    writeSeconds, self.ru_maxrss / 1024.0,
     children.ru_maxrss / 1024.0, smallest, static_cast<double>(below10) / std::max<std::size_t>(1, r.mesh.tets.size()));
   return 0;
 }
