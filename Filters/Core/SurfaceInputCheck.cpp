@@ -112,7 +112,8 @@ PreparedSurface prepareInputSurface(const TriangleSurface& input, const InputChe
       "; a closed surface needs at least 4");
     return fail();
   }
-  Index firstNonFinite = -1;
+  Index firstNonFinite = -1, largestPoint = -1;
+  double largest = 0;
   for (std::size_t i = 0; i < input.points.size(); ++i)
   {
     const Vec3& p = input.points[i];
@@ -123,12 +124,29 @@ PreparedSurface prepareInputSurface(const TriangleSurface& input, const InputChe
         firstNonFinite = static_cast<Index>(i);
       }
     }
+    else if (const double magnitude = std::max({ std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2]) });
+             magnitude > largest)
+    {
+      largest = magnitude;
+      largestPoint = static_cast<Index>(i);
+    }
   }
   if (n.nonFinitePoints > 0)
   {
     std::ostringstream msg;
     msg << plural(n.nonFinitePoints, "point has", "points have")
         << " a NaN or infinite coordinate (the first is point " << firstNonFinite << ")";
+    problems.push_back(msg.str());
+  }
+  // Every volume (the input's, the balance, each subdomain's) is a sum of
+  // terms of |p|^3; beyond 1e100 they overflow double precision and the cut
+  // would fail without a reason.
+  constexpr double kLargestCoordinate = 1e100;
+  if (largest > kLargestCoordinate)
+  {
+    std::ostringstream msg;
+    msg << "point " << largestPoint << " has a coordinate of magnitude " << largest
+        << ", beyond the 1e100 that volumes in double precision allow; scale the surface down";
     problems.push_back(msg.str());
   }
   Index firstBadTriangle = -1;
@@ -441,21 +459,6 @@ PreparedSurface prepareInputSurface(const TriangleSurface& input, const InputChe
     volume += v;
   }
   out.enclosedVolume = volume;
-  if (!std::isfinite(volume))
-  {
-    // The divergence sums have terms of |p|^3: beyond about 1e102 they
-    // overflow, and every later volume (balance, subdomains) would be inf or NaN.
-    double largest = 0;
-    for (const Vec3& p : s.points)
-    {
-      largest = std::max({ largest, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2]) });
-    }
-    char buffer[64];
-    std::snprintf(buffer, sizeof(buffer), "%.3g", largest);
-    problems.push_back(std::string("the enclosed volume overflows double precision (coordinates up to ") +
-      buffer + "); scale the surface down");
-    return fail();
-  }
   if (!(volume > 0))
   {
     problems.push_back("the surface encloses no volume");

@@ -14,13 +14,13 @@
 //                         surface -- and inconsistently oriented or inside-out
 //                         shells (orientation propagation, nesting);
 //   refused (the error):  empty input, fewer than 4 points, NaN or infinite
-//                         coordinates, indices out of range, boundary edges
+//                         coordinates, coordinates beyond 1e100 (volumes
+//                         would overflow), indices out of range, boundary edges
 //                         (open surface), non-manifold edges and vertices,
 //                         self-intersections (CGAL, exact predicates; checked
 //                         when the surface has at most `selfIntersectionLimit`
 //                         triangles), shells that cannot be oriented, no
-//                         enclosed volume, a volume too large for double
-//                         precision (coordinates beyond about 1e102).
+//                         enclosed volume.
 //
 // Deterministic: the same input gives the same output on every rank.
 #include "SurfaceOrientation.h"

@@ -231,7 +231,8 @@ DecompositionResult decomposeVolumeBalanced(
     }
     if (!std::isfinite(bestError))
     {
-      error = lastError;
+      // every split failed (with a reason), or none gave a finite volume
+      error = lastError.empty() ? "no cut of a part gave a finite volume" : lastError;
       return false;
     }
     c = std::move(best);
