@@ -84,7 +84,16 @@ def machine():
         "load_average_at_start": load,
         "gmsh": subprocess.run(["gmsh", "--version"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                                text=True).stdout.strip(),
+        # the build is of the working tree, so uncommitted changes count
+        "commit": _git("rev-parse", "--short", "HEAD"),
+        "uncommitted_source_files": len(_git("status", "--porcelain", "--", "Filters", "CMakeLists.txt").splitlines()),
     }
+
+
+def _git(*arguments):
+    p = subprocess.run(["git", "-C", casemod.ROOT] + list(arguments), stdout=subprocess.PIPE,
+                       stderr=subprocess.DEVNULL, text=True)
+    return p.stdout.strip()
 
 
 def calibrated_gmsh_size(first_size, first_count, target):

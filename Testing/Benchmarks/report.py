@@ -167,9 +167,10 @@ def goals(results, large_name):
 def print_report(results):
     m = results["machine"]
     print()
-    print("== Benchmark (%s mode) on %d CPUs (%s), %.0f GB; load %.2f at start, %.2f at end" % (
-        results["mode"], m["cpus"], m["processor"], m["memory_gb"], m["load_average_at_start"][0],
-        m["load_average_at_end"][0]))
+    print("== Benchmark (%s mode) on %d CPUs (%s), %.0f GB; load %.2f at start, %.2f at end; "
+          "commit %s with %d uncommitted source files" % (
+              results["mode"], m["cpus"], m["processor"], m["memory_gb"], m["load_average_at_start"][0],
+              m["load_average_at_end"][0], m["commit"], m["uncommitted_source_files"]))
     for case in results["cases"]:
         cal = case["gmsh_calibration"]
         print()
@@ -180,6 +181,14 @@ def print_report(results):
     print()
     print("-- Stage breakdown of the pipeline (seconds; median over repetitions)")
     print(table(STAGE_HEADERS, stage_rows(results), "ll" + "r" * (len(STAGE_HEADERS) - 2)))
+    print()
+    print("-- Cross-check: tetmesh.py's quality (ParaView Mesh Quality) against mesh_quality.py on the same meshes")
+    print(table(["case", "peer", "min dih ParaView", "min dih here", "% <10 ParaView", "% <10 here"],
+                [[c["case"], p["peer"], "%.2f" % p["paraview_quality"]["minimum_dihedral_angle_degrees"],
+                  "%.2f" % p["quality"]["minimum_dihedral_angle_degrees"],
+                  "%.4f" % (100 * p["paraview_quality"]["share_below_10_degrees"]),
+                  "%.4f" % (100 * p["quality"]["share_below_10_degrees"])]
+                 for c in results["cases"] for p in c["peers"] if p["kind"] == "pipeline"], "llrrrr"))
     if results.get("projection"):
         print()
         print("-- Scaling projection on %s: every subdomain meshed alone on one rank; serial TetGen %.2f s" % (
