@@ -393,8 +393,13 @@ bool splitCell(SurfaceComplex& c, int cell, const Vec3& n, double offset, int pl
         }
         const double length = norm(c.points[b] - c.points[a]);
         const double spacing = 0.5 * (localSpacing(a) + localSpacing(b));
-        const int segments =
-          spacing > 0 ? std::max(1, static_cast<int>(std::lround(length / spacing))) : 1;
+        // A chord needs no more points than the boundary it spans has edges;
+        // without this cap, ends on near-degenerate edges (a spacing of 1e-16)
+        // asked for 1e9 points and exhausted the memory.
+        const double mostSegments = static_cast<double>(std::max<std::size_t>(1, original.size()));
+        const int segments = spacing > 0
+          ? static_cast<int>(std::max(1.0, std::min(std::round(length / spacing), mostSegments)))
+          : 1;
         std::vector<Index> chain{ a };
         for (int j = 1; j < segments; ++j)
         {
