@@ -187,6 +187,11 @@ int vtkParallelTetMesher::RequestData(
         localError = where.str() + r.error;
         break;
       }
+      if (r.attempts > 1)
+      {
+        vtkWarningMacro(<< where.str() << "TetGen crashed with the points in their canonical order and "
+                        << "meshed them in another order (attempt " << r.attempts << ")");
+      }
       meshes[k] = std::move(r.mesh);
     }
     catch (const std::bad_alloc&)

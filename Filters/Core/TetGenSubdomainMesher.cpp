@@ -13,6 +13,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <map>
@@ -293,6 +294,52 @@ bool runTetGenIsolated(tetgenio& in, const std::string& switches, std::vector<do
   code = h.code;
   return true;
 }
+
+// TetGen's input: the surface points in the given order (position[i] is
+// where surface point i goes), one facet per triangle, the hole points.
+void fillTetGenInput(const TriangleSurface& s, const std::vector<Index>& order,
+  const std::vector<int>& position, const std::vector<Vec3>& holes, tetgenio& in)
+{
+  const std::size_t n = s.points.size();
+  in.firstnumber = 0;
+  in.numberofpoints = static_cast<int>(n);
+  in.pointlist = new REAL[3 * n];
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      in.pointlist[3 * i + k] = s.points[order[i]][k];
+    }
+  }
+  in.numberoffacets = static_cast<int>(s.triangles.size());
+  in.facetlist = new tetgenio::facet[s.triangles.size()];
+  for (std::size_t t = 0; t < s.triangles.size(); ++t)
+  {
+    tetgenio::facet& f = in.facetlist[t];
+    tetgenio::init(&f);
+    f.numberofpolygons = 1;
+    f.polygonlist = new tetgenio::polygon[1];
+    tetgenio::init(&f.polygonlist[0]);
+    f.polygonlist[0].numberofvertices = 3;
+    f.polygonlist[0].vertexlist = new int[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      f.polygonlist[0].vertexlist[k] = position[s.triangles[t][k]];
+    }
+  }
+  if (!holes.empty())
+  {
+    in.numberofholes = static_cast<int>(holes.size());
+    in.holelist = new REAL[3 * holes.size()];
+    for (std::size_t h = 0; h < holes.size(); ++h)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        in.holelist[3 * h + k] = holes[h][k];
+      }
+    }
+  }
+}
 } // namespace
 
 std::string describeTetGenError(int code)
@@ -410,53 +457,61 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
   switches << "a" << volume << options.extraSwitches;
   r.switchesUsed = switches.str();
 
-  tetgenio in;
-  in.firstnumber = 0;
-  in.numberofpoints = static_cast<int>(n);
-  in.pointlist = new REAL[3 * n];
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      in.pointlist[3 * i + k] = s.points[i][k];
-    }
-  }
-  in.numberoffacets = static_cast<int>(s.triangles.size());
-  in.facetlist = new tetgenio::facet[s.triangles.size()];
-  for (std::size_t t = 0; t < s.triangles.size(); ++t)
-  {
-    tetgenio::facet& f = in.facetlist[t];
-    tetgenio::init(&f);
-    f.numberofpolygons = 1;
-    f.polygonlist = new tetgenio::polygon[1];
-    tetgenio::init(&f.polygonlist[0]);
-    f.polygonlist[0].numberofvertices = 3;
-    f.polygonlist[0].vertexlist = new int[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      f.polygonlist[0].vertexlist[k] = static_cast<int>(s.triangles[t][k]);
-    }
-  }
-  if (!holes.empty())
-  {
-    in.numberofholes = static_cast<int>(holes.size());
-    in.holelist = new REAL[3 * holes.size()];
-    for (std::size_t h = 0; h < holes.size(); ++h)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        in.holelist[3 * h + k] = holes[h][k];
-      }
-    }
-  }
+  // TetGen 1.5 sometimes aborts on an assertion in its symbolic
+  // perturbation (insphere_s: oriB != 0) for an input it can mesh when the
+  // points come in another order; its result does not depend on the order
+  // otherwise. So a crash or an internal error is retried with the points
+  // reversed, then shuffled (a fixed seed): still the same mesh for the same
+  // input on any rank.
   std::vector<double> outPoints;
   std::vector<int> outTets;
-  int status = 0, code = 0;
+  std::vector<Index> order(n); // input position -> surface point
+  bool meshed = false;
   std::string failure;
-  if (!runTetGenIsolated(in, r.switchesUsed, outPoints, outTets, status, code, failure))
+  int status = 0, code = 0;
+  for (int attempt = 0; attempt < 3 && !meshed; ++attempt)
+  {
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      order[i] = static_cast<Index>(attempt == 1 ? n - 1 - i : i);
+    }
+    if (attempt == 2)
+    {
+      std::uint64_t state = 0x9E3779B97F4A7C15ull;
+      for (std::size_t i = n - 1; i > 0; --i)
+      {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        std::swap(order[i], order[state % (i + 1)]);
+      }
+    }
+    std::vector<int> position(n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      position[order[i]] = static_cast<int>(i);
+    }
+    tetgenio in;
+    fillTetGenInput(s, order, position, holes, in);
+    outPoints.clear();
+    outTets.clear();
+    failure.clear();
+    status = code = 0;
+    const bool ran = runTetGenIsolated(in, r.switchesUsed, outPoints, outTets, status, code, failure);
+    meshed = ran && status == 0;
+    r.attempts = attempt + 1;
+    const bool retry = !ran || (status == 1 && code == 2);
+    if (!retry)
+    {
+      break;
+    }
+  }
+  if (!failure.empty())
   {
     r.tetgenCode = code;
-    r.error = failure;
+    r.error = failure + (r.attempts > 1 ? " (also with the points in " + std::to_string(r.attempts - 1) +
+                                              " other orders)"
+                                        : "");
     return r;
   }
   if (status == 1)
@@ -475,6 +530,23 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
   {
     r.error = "TetGen did not accept the switches '" + r.switchesUsed + "'";
     return r;
+  }
+  // back to the surface's own order: input position k is surface point order[k]
+  if (r.attempts > 1)
+  {
+    std::vector<double> surfaceFirst(outPoints);
+    for (std::size_t k = 0; k < n && 3 * k + 2 < outPoints.size(); ++k)
+    {
+      std::copy_n(&outPoints[3 * k], 3, &surfaceFirst[3 * order[k]]);
+    }
+    outPoints.swap(surfaceFirst);
+    for (int& v : outTets)
+    {
+      if (v >= 0 && static_cast<std::size_t>(v) < n)
+      {
+        v = static_cast<int>(order[v]);
+      }
+    }
   }
   const int outPointCount = static_cast<int>(outPoints.size() / 3);
   const int outTetCount = static_cast<int>(outTets.size() / 4);

@@ -10,8 +10,10 @@
 // the boundary), so neighbouring subdomains meshed apart match node for node.
 // Shells with negative enclosed volume (cavities) get a hole point so TetGen
 // leaves them empty. TetGen's failures (it throws an int) become ok = false
-// with the code and its meaning. The same input and options give the same
-// mesh.
+// with the code and its meaning. TetGen 1.5 sometimes aborts on an
+// assertion for an input it meshes when the points come in another order:
+// then it runs again with the points reversed, then shuffled with a fixed
+// seed. The same input and options give the same mesh.
 #include "TriangleSurface.h"
 
 #include <string>
@@ -39,6 +41,7 @@ struct TetMeshingResult
   std::string error;
   TetMesh mesh;
   std::string switchesUsed;
+  int attempts = 0; // TetGen runs: more than 1 if it crashed with the points in their first order
 };
 
 TetMeshingResult meshClosedSurface(const TriangleSurface& surface, const TetMeshingOptions& options);

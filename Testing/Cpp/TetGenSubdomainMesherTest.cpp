@@ -1,3 +1,4 @@
+#include "OffFormat.h"
 #include "TestSurfaces.h"
 #include "TetGenSubdomainMesher.h"
 
@@ -115,6 +116,23 @@ TEST(TetGenSubdomainMesher, Deterministic)
   const TetMeshingResult a = meshClosedSurface(ball, {});
   const TetMeshingResult b = meshClosedSurface(ball, {});
   ASSERT_TRUE(a.ok && b.ok);
+  EXPECT_EQ(a.mesh.points, b.mesh.points);
+  EXPECT_EQ(a.mesh.tets, b.mesh.tets);
+}
+
+TEST(TetGenSubdomainMesher, AbortInOnePointOrderIsRetriedInAnother)
+{
+  // TetGen 1.5 aborts on this surface (an assertion in insphere_s) with its
+  // points in file order and meshes it with them reversed; the result keeps
+  // the surface's own point order and is the same every time
+  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/tetgen_abort_in_canonical_order.off");
+  ASSERT_TRUE(file.ok) << file.error;
+  const TriangleSurface& surface = file.data.surface;
+  const TetMeshingResult a = meshClosedSurface(surface, {});
+  EXPECT_EQ(a.attempts, 2);
+  expectConformingMesh(surface, a, "retried in another order");
+  const TetMeshingResult b = meshClosedSurface(surface, {});
+  ASSERT_TRUE(b.ok) << b.error;
   EXPECT_EQ(a.mesh.points, b.mesh.points);
   EXPECT_EQ(a.mesh.tets, b.mesh.tets);
 }
