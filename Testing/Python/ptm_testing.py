@@ -77,19 +77,21 @@ def load_plugin(ns=None):
 
 
 def run_checks(main):
-    """Runs main() on every rank; every rank fails if any rank failed."""
-    ok = True
+    """Runs main() on every rank. A rank that fails prints why and exits at
+    once with status 1: mpiexec then ends the other ranks, which may be
+    waiting in a collective the failed rank will never reach (agreeing on
+    the failure with a collective could deadlock)."""
     try:
         main()
-    except Exception:
+    except BaseException:
         traceback.print_exc()
+        print("rank %d of %d: FAILED" % (rank(), size()))
         sys.stdout.flush()
-        ok = False
-    ok = all_ranks_true(ok)
-    print("rank %d of %d: %s" % (rank(), size(), "passed" if ok else "FAILED"))
+        sys.stderr.flush()
+        os._exit(1)
+    barrier()
+    print("rank %d of %d: passed" % (rank(), size()))
     sys.stdout.flush()
-    if not ok:
-        sys.exit(1)
 
 
 class ErrorCatcher:
