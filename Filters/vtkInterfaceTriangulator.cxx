@@ -35,6 +35,7 @@ struct RegionFigures
 {
   long long newPoints = 0;
   long long belowMinimumAngle = 0;
+  long long belowMinimumAngleAwayFromBoundary = 0;
   long long encroached = 0;
   double minimumAngle = 180;
 };
@@ -182,18 +183,20 @@ int vtkInterfaceTriangulator::RequestData(
     mine.push_back(std::get<2>(d.key));
     mine.push_back(static_cast<long long>(d.triangulation.newPoints.size()));
     mine.push_back(static_cast<long long>(d.triangulation.trianglesBelowMinimumAngle));
+    mine.push_back(static_cast<long long>(d.triangulation.trianglesBelowMinimumAngleAwayFromBoundary));
     mine.push_back(static_cast<long long>(d.triangulation.encroachedSegmentsLeft));
     mine.push_back(std::llround(d.triangulation.minimumAngleDegrees * 1e9));
   }
   const std::vector<long long> all = ptm::allGatherValues(controller, mine);
   std::map<RegionKey, RegionFigures> regions;
-  for (std::size_t k = 0; k + 6 < all.size(); k += 7)
+  for (std::size_t k = 0; k + 7 < all.size(); k += 8)
   {
     RegionFigures f;
     f.newPoints = all[k + 3];
     f.belowMinimumAngle = all[k + 4];
-    f.encroached = all[k + 5];
-    f.minimumAngle = static_cast<double>(all[k + 6]) * 1e-9;
+    f.belowMinimumAngleAwayFromBoundary = all[k + 5];
+    f.encroached = all[k + 6];
+    f.minimumAngle = static_cast<double>(all[k + 7]) * 1e-9;
     regions[RegionKey(all[k], all[k + 1], all[k + 2])] = f;
   }
   std::map<RegionKey, long long> firstNewId;
@@ -205,6 +208,7 @@ int vtkInterfaceTriangulator::RequestData(
     next += f.newPoints;
     total.newPoints += f.newPoints;
     total.belowMinimumAngle += f.belowMinimumAngle;
+    total.belowMinimumAngleAwayFromBoundary += f.belowMinimumAngleAwayFromBoundary;
     total.encroached += f.encroached;
     total.minimumAngle = std::min(total.minimumAngle, f.minimumAngle);
   }
@@ -249,6 +253,7 @@ int vtkInterfaceTriangulator::RequestData(
   };
   addCount("InterfaceNewPoints", total.newPoints);
   addCount("InterfaceTrianglesBelowMinimumAngle", total.belowMinimumAngle);
+  addCount("InterfaceTrianglesBelowMinimumAngleAwayFromBoundary", total.belowMinimumAngleAwayFromBoundary);
   addCount("EncroachedBoundarySegments", total.encroached);
   vtkNew<vtkDoubleArray> angle;
   angle->SetName("InterfaceMinimumAngle");

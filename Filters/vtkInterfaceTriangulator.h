@@ -16,6 +16,7 @@
  * Output: the same complex with the loops replaced by interface triangles
  * (SubdomainPair oriented out of the first subdomain, SourceFaceId -1,
  * PlaneId of the plane); field data adds InterfaceTrianglesBelowMinimumAngle,
+ * InterfaceTrianglesBelowMinimumAngleAwayFromBoundary (0 expected),
  * EncroachedBoundarySegments, InterfaceMinimumAngle and InterfaceNewPoints.
  * Collective: every rank must execute it; a failure anywhere fails all.
  */

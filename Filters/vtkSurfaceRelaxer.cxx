@@ -168,7 +168,8 @@ int vtkSurfaceRelaxer::RequestData(
   if (input)
   {
     for (const char* name : { "InterfaceNewPoints", "InterfaceTrianglesBelowMinimumAngle",
-           "EncroachedBoundarySegments", "InterfaceMinimumAngle",
+           "InterfaceTrianglesBelowMinimumAngleAwayFromBoundary", "EncroachedBoundarySegments",
+           "InterfaceMinimumAngle",
            ptm::arrays::BalanceCriterionName, ptm::arrays::MaximumImbalance })
     {
       if (vtkAbstractArray* a = input->GetFieldData()->GetAbstractArray(name))

@@ -53,6 +53,193 @@ bool encroaches(const Point& p, const Point& a, const Point& b)
   return (a.x() - p.x()) * (b.x() - p.x()) + (a.y() - p.y()) * (b.y() - p.y()) < 0;
 }
 
+double faceAngle(Face f)
+{
+  return minimumAngle(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
+}
+
+double longestEdge(const Point& a, const Point& b, const Point& c)
+{
+  return std::sqrt(std::max(
+    { CGAL::squared_distance(a, b), CGAL::squared_distance(b, c), CGAL::squared_distance(c, a) }));
+}
+
+// How far the triangles around v would fall short of the angle bound if v
+// stood at p: the sum of the deficits, then (negated, as a tie-break) the
+// smallest angle; infinite if one of them would be inverted or degenerate,
+// or would get an edge longer than both the size field allows (sizeFactor x
+// the mean size of its corners) and it has now.
+std::pair<double, double> starShortfallAt(
+  const CDT& cdt, Vertex v, const Point& p, Index boundaryCount, double bound, double sizeFactor)
+{
+  double deficit = 0, worst = kPi;
+  auto f = cdt.incident_faces(v), done = f;
+  do
+  {
+    const int i = f->index(v);
+    const Vertex va = f->vertex(CDT::ccw(i)), vb = f->vertex(CDT::cw(i));
+    const Point& a = va->point();
+    const Point& b = vb->point();
+    const double allowed = sizeFactor * (v->info().size + va->info().size + vb->info().size) / 3.0;
+    const double longest = longestEdge(p, a, b);
+    if (CGAL::orientation(p, a, b) != CGAL::LEFT_TURN ||
+      (longest > allowed && longest > longestEdge(v->point(), a, b)))
+    {
+      return { std::numeric_limits<double>::infinity(), 0 };
+    }
+    const double angle = minimumAngle(p, a, b);
+    // a triangle with a boundary point may be forced to be poor by the
+    // boundary; one without may not, so a move must not make it poor
+    if (angle < bound && v->info().index >= boundaryCount && va->info().index >= boundaryCount &&
+      vb->info().index >= boundaryCount && minimumAngle(v->point(), a, b) >= bound)
+    {
+      return { std::numeric_limits<double>::infinity(), 0 };
+    }
+    deficit += std::max(0.0, bound - angle);
+    worst = std::min(worst, angle);
+  } while (++f != done);
+  return { deficit, -worst };
+}
+
+void smoothBadTriangles(CDT& cdt, std::size_t boundaryCount, double bound, double sizeFactor)
+{
+  const int sweeps = 20;
+  for (int sweep = 0; sweep < sweeps; ++sweep)
+  {
+    // new vertices of bad triangles, in index order
+    std::map<Index, Vertex> movable;
+    for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    {
+      if (f->info().inside && faceAngle(f) < bound)
+      {
+        for (int i = 0; i < 3; ++i)
+        {
+          if (f->vertex(i)->info().index >= static_cast<Index>(boundaryCount))
+          {
+            movable[f->vertex(i)->info().index] = f->vertex(i);
+          }
+        }
+      }
+    }
+    bool moved = false;
+    for (const auto& [index, v] : movable)
+    {
+      const Point start = v->point();
+      auto best = starShortfallAt(cdt, v, start, static_cast<Index>(boundaryCount), bound, sizeFactor);
+      Point bestPoint = start;
+      // candidates: the centroid of the neighbours, then a pattern search
+      double cx = 0, cy = 0, shortest = std::numeric_limits<double>::infinity();
+      int count = 0;
+      auto w = cdt.incident_vertices(v), done = w;
+      do
+      {
+        cx += w->point().x();
+        cy += w->point().y();
+        shortest = std::min(shortest, std::sqrt(CGAL::squared_distance(start, w->point())));
+        ++count;
+      } while (++w != done);
+      const Point centroid(cx / count, cy / count);
+      const auto atCentroid = starShortfallAt(cdt, v, centroid, static_cast<Index>(boundaryCount), bound, sizeFactor);
+      if (atCentroid < best)
+      {
+        best = atCentroid;
+        bestPoint = centroid;
+      }
+      for (double step = 0.25 * shortest; step > 0.01 * shortest; step *= 0.5)
+      {
+        bool improved = true;
+        while (improved)
+        {
+          improved = false;
+          for (int d = 0; d < 8; ++d)
+          {
+            const double a = d * kPi / 4;
+            const Point q(bestPoint.x() + step * std::cos(a), bestPoint.y() + step * std::sin(a));
+            const auto shortfall = starShortfallAt(cdt, v, q, static_cast<Index>(boundaryCount), bound, sizeFactor);
+            if (shortfall < best)
+            {
+              best = shortfall;
+              bestPoint = q;
+              improved = true;
+            }
+          }
+        }
+      }
+      if (bestPoint != start)
+      {
+        v->set_point(bestPoint);
+        moved = true;
+      }
+    }
+    // flips that raise the smaller angle of the two triangles of an edge
+    bool flipped = true;
+    for (int round = 0; flipped && round < 4; ++round)
+    {
+      flipped = false;
+      std::map<std::pair<Index, Index>, std::pair<Face, int>> edges;
+      for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+      {
+        if (!f->info().inside)
+        {
+          continue;
+        }
+        for (int i = 0; i < 3; ++i)
+        {
+          const Face g = f->neighbor(i);
+          if (f->is_constrained(i) || cdt.is_infinite(g) || !g->info().inside)
+          {
+            continue;
+          }
+          const Index a = f->vertex(CDT::ccw(i))->info().index, b = f->vertex(CDT::cw(i))->info().index;
+          edges.insert({ { std::min(a, b), std::max(a, b) }, { f, i } });
+        }
+      }
+      for (const auto& [key, edge] : edges)
+      {
+        Face f = edge.first;
+        const int i = edge.second;
+        // the edge may have been flipped away already
+        const Index a = f->vertex(CDT::ccw(i))->info().index, b = f->vertex(CDT::cw(i))->info().index;
+        if (std::make_pair(std::min(a, b), std::max(a, b)) != key || f->is_constrained(i))
+        {
+          continue;
+        }
+        const Face g = f->neighbor(i);
+        const Point& p = f->vertex(i)->point();
+        const Point& q = g->vertex(g->index(f))->point();
+        const Point& u = f->vertex(CDT::ccw(i))->point();
+        const Point& t = f->vertex(CDT::cw(i))->point();
+        if (CGAL::orientation(p, u, q) != CGAL::LEFT_TURN || CGAL::orientation(p, q, t) != CGAL::LEFT_TURN)
+        {
+          continue; // not a convex quadrilateral
+        }
+        // nor a new diagonal longer than the old one and than the size allows
+        const double diagonal = std::sqrt(CGAL::squared_distance(p, q));
+        const double allowed = sizeFactor * (f->vertex(i)->info().size + g->vertex(g->index(f))->info().size) / 2;
+        if (diagonal > allowed && diagonal * diagonal > CGAL::squared_distance(u, t))
+        {
+          continue;
+        }
+        // the same measure as for moves: the deficits, then the smaller angle
+        auto shortfall = [&](double x, double y) {
+          return std::make_pair(std::max(0.0, bound - x) + std::max(0.0, bound - y), -std::min(x, y));
+        };
+        const auto now = shortfall(minimumAngle(p, u, t), minimumAngle(q, t, u));
+        const auto then = shortfall(minimumAngle(p, u, q), minimumAngle(p, q, t));
+        if (then.first < now.first - 1e-12 || (then.first <= now.first && then.second < now.second - 1e-12))
+        {
+          cdt.flip(f, i);
+          flipped = true;
+        }
+      }
+    }
+    if (!moved && !flipped)
+    {
+      break;
+    }
+  }
+}
+
 using FaceKey = std::array<Index, 3>;
 FaceKey keyOf(Face f)
 {
@@ -271,6 +458,10 @@ InterfaceTriangulationResult triangulateInterface(
   const double largestSize = 1.5 * meanSpacing;
   const std::size_t cap = static_cast<std::size_t>(
     std::min(2e7, 50.0 * area / (smallestSize * smallestSize) + 20.0 * n + 100));
+  // Too large is an edge longer than the size field allows. A maximum edge
+  // length is a hard bound; the automatic size is the local spacing, and
+  // allowing 1.3 x it makes the mean edge about equal to the spacing.
+  const double sizeFactor = options.maximumEdgeLength > 0 ? 1.0 : 1.3;
   auto faceSize = [&](Face f) {
     return (f->vertex(0)->info().size + f->vertex(1)->info().size + f->vertex(2)->info().size) / 3.0;
   };
@@ -284,9 +475,9 @@ InterfaceTriangulationResult triangulateInterface(
     {
       return 1.0 + (bound - angle);
     }
-    const double radius = std::sqrt(CGAL::squared_radius(a, b, c));
-    const double allowed = 0.7 * faceSize(f);
-    return radius > allowed ? (radius / allowed - 1.0) * 1e-3 : -1.0;
+    const double longest = longestEdge(a, b, c);
+    const double allowed = sizeFactor * faceSize(f);
+    return longest > allowed ? (longest / allowed - 1.0) * 1e-3 : -1.0;
   };
   using Entry = std::pair<double, FaceKey>;
   auto worse = [](const Entry& x, const Entry& y) {
@@ -311,10 +502,17 @@ InterfaceTriangulationResult triangulateInterface(
   {
     consider(f);
   }
-  std::set<FaceKey> unfixable;
   std::vector<Point> added;
-  // Whether p can be inserted: strictly inside the region and encroaching no segment.
-  auto safe = [&](const Point& p, Face hint, Face& located) {
+  // Whether a new vertex at p is acceptable, and the face that holds it:
+  //  * p lies strictly inside a face of the region;
+  //  * no vertex of its conflict zone is closer than `clearance` (no tiny
+  //    edges, so the refinement terminates);
+  //  * every boundary segment on the border of the conflict zone, which gets
+  //    p as the apex of its new triangle, gets a triangle that meets the angle
+  //    bound or is no worse than the one it has. Boundary segments are never
+  //    split, so this is what keeps the triangles on them as good as they can
+  //    be: a bad triangle on a segment could never be repaired.
+  auto acceptable = [&](const Point& p, Face hint, double clearance, Face& located) {
     CDT::Locate_type lt;
     int li = 0;
     located = cdt.locate(p, lt, li, hint);
@@ -323,16 +521,34 @@ InterfaceTriangulationResult triangulateInterface(
       return false;
     }
     std::vector<Face> conflicts;
-    cdt.get_conflicts(p, std::back_inserter(conflicts), located);
-    for (Face f : conflicts)
+    std::vector<CDT::Edge> border;
+    cdt.get_conflicts_and_boundary(p, std::back_inserter(conflicts), std::back_inserter(border), located);
+    const double clearance2 = clearance * clearance;
+    for (Face g : conflicts)
     {
       for (int i = 0; i < 3; ++i)
       {
-        if (f->is_constrained(i) &&
-          encroaches(p, f->vertex(CDT::ccw(i))->point(), f->vertex(CDT::cw(i))->point()))
+        if (CGAL::squared_distance(p, g->vertex(i)->point()) < clearance2)
         {
           return false;
         }
+      }
+    }
+    for (const CDT::Edge& e : border)
+    {
+      // e is given by the face outside the conflict zone; across it lies the
+      // face in conflict that now rests on the segment
+      if (!e.first->is_constrained(e.second))
+      {
+        continue;
+      }
+      const Face now = e.first->neighbor(e.second);
+      const double before = minimumAngle(now->vertex(0)->point(), now->vertex(1)->point(), now->vertex(2)->point());
+      const double after = minimumAngle(
+        e.first->vertex(CDT::ccw(e.second))->point(), e.first->vertex(CDT::cw(e.second))->point(), p);
+      if (after < bound && after < before)
+      {
+        return false;
       }
     }
     return true;
@@ -367,79 +583,109 @@ InterfaceTriangulationResult triangulateInterface(
       continue;
     }
     Face f = it->second;
+    live.erase(it);
     if (keyOf(f) != top.second || badness(f) != top.first)
     {
-      live.erase(it); // stale: the face was destroyed or changed
-      continue;
+      continue; // stale: the face was destroyed or changed
     }
-    live.erase(it);
     const std::array<Vertex, 3> around{ f->vertex(0), f->vertex(1), f->vertex(2) };
+    // Candidates: the circumcentre, then points on the perpendicular
+    // bisector of the shortest edge between the circumcentre and the apex of
+    // the equilateral triangle on that edge (off-centres): nearer points
+    // disturb less, so they fit where the circumcentre would spoil a
+    // boundary segment's triangle.
     const Point centre = CGAL::circumcenter(around[0]->point(), around[1]->point(), around[2]->point());
-    Face located;
-    if (safe(centre, f, located))
-    {
-      insertAt(centre, located, around);
-      continue;
-    }
-    // A point in front of the segment that the circumcentre encroaches or lies
-    // behind: the apex of a near-equilateral triangle on it, inside the region.
-    bool inserted = false;
-    std::vector<Face> conflicts;
-    CDT::Locate_type lt;
-    int li = 0;
-    Face where = cdt.locate(centre, lt, li, f);
-    std::vector<std::pair<Vertex, Vertex>> segments;
+    int k = 0; // the vertex opposite the shortest edge
+    double shortest = std::numeric_limits<double>::infinity();
     for (int i = 0; i < 3; ++i)
     {
-      if (f->is_constrained(i))
+      const double l = CGAL::squared_distance(around[CDT::ccw(i)]->point(), around[CDT::cw(i)]->point());
+      if (l < shortest)
       {
-        segments.push_back({ f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i)) });
+        shortest = l;
+        k = i;
       }
     }
-    if (lt == CDT::FACE && !cdt.is_infinite(where))
+    shortest = std::sqrt(shortest);
+    const Point& p = around[CDT::ccw(k)]->point();
+    const Point& q = around[CDT::cw(k)]->point();
+    const Point middle((p.x() + q.x()) / 2, (p.y() + q.y()) / 2);
+    // unit normal of pq towards the opposite vertex (the inside of f)
+    double ux = -(q.y() - p.y()) / shortest, uy = (q.x() - p.x()) / shortest;
+    const Point& apex = around[k]->point();
+    if ((apex.x() - middle.x()) * ux + (apex.y() - middle.y()) * uy < 0)
     {
-      cdt.get_conflicts(centre, std::back_inserter(conflicts), where);
-      for (Face g : conflicts)
+      ux = -ux;
+      uy = -uy;
+    }
+    const double reach = (centre.x() - middle.x()) * ux + (centre.y() - middle.y()) * uy;
+    const double clearance = 0.5 * shortest;
+    std::vector<std::pair<Point, double>> candidates{ { centre, clearance } }; // and their clearance
+    const double nearest = 0.5 * std::sqrt(3.0) * shortest;
+    if (reach > nearest)
+    {
+      for (int step = 1; step <= 4; ++step)
       {
-        for (int i = 0; i < 3; ++i)
-        {
-          if (g->is_constrained(i) &&
-            encroaches(centre, g->vertex(CDT::ccw(i))->point(), g->vertex(CDT::cw(i))->point()))
-          {
-            const bool gInside = g->info().inside;
-            segments.push_back(gInside ? std::make_pair(g->vertex(CDT::ccw(i)), g->vertex(CDT::cw(i)))
-                                       : std::make_pair(g->vertex(CDT::cw(i)), g->vertex(CDT::ccw(i))));
-          }
-        }
+        const double h = reach * std::pow(nearest / reach, step / 4.0);
+        candidates.push_back({ Point(middle.x() + h * ux, middle.y() + h * uy), clearance });
       }
     }
-    for (const auto& [a, b] : segments)
+    for (const auto& [candidate, distance] : candidates)
     {
-      // the inside is to the left of a -> b
-      const double dx = b->point().x() - a->point().x(), dy = b->point().y() - a->point().y();
-      const double length = std::sqrt(dx * dx + dy * dy);
-      const double height = 0.75 * length;
-      const Point apex((a->point().x() + b->point().x()) / 2 - dy / length * height,
-        (a->point().y() + b->point().y()) / 2 + dx / length * height);
-      if (safe(apex, f, located))
+      Face located;
+      if (acceptable(candidate, f, distance, located))
       {
-        insertAt(apex, located, around);
-        inserted = true;
+        insertAt(candidate, located, around);
         break;
       }
     }
-    if (!inserted)
-    {
-      unfixable.insert(top.second);
-    }
   }
+
+  // Smoothing: the refinement cannot move a vertex once placed, and a
+  // boundary segment is never split, so triangles can stay thin where a
+  // vertex sits too low over a long segment. Each new vertex of a bad
+  // triangle moves, within its star, to where the worst angle of its
+  // triangles is largest; then unconstrained edges are flipped where that
+  // raises the smaller angle of the pair. Boundary points never move.
+  smoothBadTriangles(cdt, n, bound, sizeFactor);
 
   // Output.
   InterfaceTriangulation& t = result.triangulation;
-  for (const Point& p : added)
+  t.newPoints.resize(added.size());
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
   {
-    t.newPoints.push_back(region.origin + p.x() * e1 + p.y() * e2);
+    const Index i = v->info().index;
+    if (i >= static_cast<Index>(n))
+    {
+      // where smoothing left it
+      t.newPoints[i - n] = region.origin + v->point().x() * e1 + v->point().y() * e2;
+    }
   }
+  // A triangle is next to the boundary if it has a boundary point or its
+  // circumcircle reaches a boundary segment: only a point inside that circle
+  // could improve it, and such a point would spoil the segment's triangle.
+  auto nextToBoundary = [&](Face f) {
+    const Point& a = f->vertex(0)->point();
+    const Point& b = f->vertex(1)->point();
+    const Point& c = f->vertex(2)->point();
+    for (int i = 0; i < 3; ++i)
+    {
+      if (f->vertex(i)->info().index < static_cast<Index>(n))
+      {
+        return true;
+      }
+    }
+    const Point centre = CGAL::circumcenter(a, b, c);
+    const double radius2 = CGAL::squared_radius(a, b, c);
+    for (const auto& e : region.edges)
+    {
+      if (CGAL::squared_distance(centre, K::Segment_2(vertices[e[0]]->point(), vertices[e[1]]->point())) < radius2)
+      {
+        return true;
+      }
+    }
+    return false;
+  };
   t.minimumAngleDegrees = 180;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
   {
@@ -450,7 +696,11 @@ InterfaceTriangulationResult triangulateInterface(
     t.triangles.push_back({ f->vertex(0)->info().index, f->vertex(1)->info().index, f->vertex(2)->info().index });
     const double angle = minimumAngle(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()) * 180.0 / kPi;
     t.minimumAngleDegrees = std::min(t.minimumAngleDegrees, angle);
-    t.trianglesBelowMinimumAngle += angle < options.minimumAngleDegrees ? 1 : 0;
+    if (angle < options.minimumAngleDegrees)
+    {
+      ++t.trianglesBelowMinimumAngle;
+      t.trianglesBelowMinimumAngleAwayFromBoundary += nextToBoundary(f) ? 0 : 1;
+    }
     for (int i = 0; i < 3; ++i)
     {
       if (f->is_constrained(i) &&

@@ -10,11 +10,18 @@
 // and other interfaces, so no point is ever put on a segment: the result
 // contains every segment as an edge of exactly one triangle, and new points
 // only strictly inside. Built on CGAL's constrained Delaunay triangulation
-// (exact predicates); refined Ruppert-style by inserting circumcentres of
-// triangles with a small angle or a size above the sizing field, except where
-// a circumcentre would encroach a boundary segment: then a point in front of
-// the segment is tried, and if no safe point exists the triangle is left and
-// counted. The same input always gives bit-identical output.
+// (exact predicates). Refinement, Ruppert-style but without ever splitting a
+// segment: the worst triangle (angle under the bound, or an edge longer than
+// the size field) gets its circumcentre, or, where that would make the
+// triangle on some boundary segment worse than the bound and than it is, a
+// point nearer to it on the bisector of its shortest edge (off-centres); a
+// point closer than half that edge to a vertex is never inserted. Then the
+// new points of triangles still under the bound move within their stars to
+// where the angle shortfall of their triangles is least (a triangle without
+// a boundary point never becomes poor), and edges flip where that lowers it.
+// Triangles under the bound are left only next to the boundary: with a
+// boundary point, or with a circumcircle that reaches a boundary segment.
+// The same input always gives bit-identical output.
 #include "TriangleSurface.h"
 
 #include <string>
@@ -40,6 +47,9 @@ struct InterfaceTriangulation
   std::vector<Vec3> newPoints;     // on the plane
   std::vector<Triangle> triangles; // < points.size(): boundary point; else newPoints[i - points.size()]
   std::size_t trianglesBelowMinimumAngle = 0;
+  // ... of them neither touching the boundary nor with a circumcircle that
+  // reaches a boundary segment (none are expected)
+  std::size_t trianglesBelowMinimumAngleAwayFromBoundary = 0;
   std::size_t encroachedSegmentsLeft = 0;
   double minimumAngleDegrees = 0;
 };

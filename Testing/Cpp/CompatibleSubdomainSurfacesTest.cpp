@@ -2,8 +2,9 @@
 // surface, K and strategy, triangulating every interface region of the
 // decomposition gives each subdomain a closed, edge-manifold, outward surface
 // that does not cross itself and whose volumes add up to the input volume;
-// interface triangles under the minimum angle are counted.
-#include "InterfaceTriangulation.h"
+// every interface triangle under the minimum angle is next to the boundary
+// (has a boundary point, or its circumcircle reaches a boundary segment),
+// and the triangulator counts those away from it the same way (none).
 #include "SelfIntersectionCheck.h"
 #include "TestSurfaces.h"
 #include "VolumeBalancedDecomposition.h"
@@ -18,72 +19,6 @@
 using namespace ptm;
 using namespace ptm::test;
 
-namespace
-{
-// Replaces every interface region by its triangles, like the filter does.
-void triangulateAll(SurfaceComplex& c, std::size_t& exceptions, std::size_t& interiorExceptions,
-  double& smallestAngle)
-{
-  exceptions = 0;
-  interiorExceptions = 0;
-  smallestAngle = 180;
-  for (const InterfaceRegion& region : c.interfaces)
-  {
-    std::vector<Index> points;
-    for (const auto& e : region.edges)
-    {
-      points.push_back(e[0]);
-    }
-    std::sort(points.begin(), points.end());
-    points.erase(std::unique(points.begin(), points.end()), points.end());
-    std::map<Index, Index> local;
-    PlanarRegion planar;
-    planar.origin = c.planes[region.planeId].origin;
-    planar.normal = c.planes[region.planeId].normal;
-    for (Index p : points)
-    {
-      local[p] = static_cast<Index>(planar.points.size());
-      planar.points.push_back(c.points[p]);
-    }
-    for (const auto& e : region.edges)
-    {
-      planar.edges.push_back({ local[e[0]], local[e[1]] });
-    }
-    const InterfaceTriangulationResult r = triangulateInterface(planar, {});
-    ASSERT_TRUE(r.ok) << r.error;
-    exceptions += r.triangulation.trianglesBelowMinimumAngle;
-    smallestAngle = std::min(smallestAngle, r.triangulation.minimumAngleDegrees);
-    // exceptions are counted; record how many do not touch the boundary
-    const Index boundaryCount = static_cast<Index>(planar.points.size());
-    for (const Triangle& t : r.triangulation.triangles)
-    {
-      auto at = [&](Index i) { return i < boundaryCount ? planar.points[i] : r.triangulation.newPoints[i - boundaryCount]; };
-      const Vec3 a = at(t[0]), b = at(t[1]), d = at(t[2]);
-      auto angle = [](const Vec3& p, const Vec3& q, const Vec3& w) {
-        return std::atan2(norm(cross(q - p, w - p)), dot(q - p, w - p)) * 180 / kPi;
-      };
-      if (std::min({ angle(a, b, d), angle(b, d, a), angle(d, a, b) }) < 20.7 &&
-        t[0] >= boundaryCount && t[1] >= boundaryCount && t[2] >= boundaryCount)
-      {
-        ++interiorExceptions;
-      }
-    }
-    std::vector<Index> global = points;
-    for (const Vec3& p : r.triangulation.newPoints)
-    {
-      global.push_back(static_cast<Index>(c.points.size()));
-      c.points.push_back(p);
-    }
-    for (const Triangle& t : r.triangulation.triangles)
-    {
-      c.triangles.push_back({ global[t[0]], global[t[1]], global[t[2]] });
-      c.trianglePairs.push_back(region.pair);
-      c.sourceFaces.push_back(-1);
-    }
-  }
-  c.interfaces.clear();
-}
-} // namespace
 
 class CompatibleSubdomainSurfaces : public ::testing::TestWithParam<std::tuple<int, CutStrategy>>
 {
@@ -96,16 +31,16 @@ TEST_P(CompatibleSubdomainSurfaces, ClosedManifoldOutwardAndVolumesAddUp)
   {
     std::ostringstream label;
     label << k.name << " K=" << K << " " << toString(strategy);
-    DecompositionOptions options;
-    options.numberOfSubdomains = K;
-    options.strategy = strategy;
-    options.direction = strategy == CutStrategy::ParallelPlanes ? CutDirection::LongestExtent : CutDirection::Inertia;
-    DecompositionResult d = decomposeVolumeBalanced(k.surface, options);
+    DecompositionResult d = decomposeVolumeBalanced(k.surface, stageCaseOptions(K, strategy));
     ASSERT_TRUE(d.ok) << label.str() << ": " << d.error;
     SurfaceComplex c = d.complex;
-    std::size_t exceptions = 0, interior = 0;
-    double smallest = 0;
-    triangulateAll(c, exceptions, interior, smallest);
+    const InterfaceFigures figures = triangulateAllInterfaces(c);
+    ASSERT_TRUE(figures.ok) << label.str() << ": " << figures.error;
+    const std::size_t exceptions = figures.exceptions;
+    // triangles under the bound only next to the boundary (which is never split)
+    EXPECT_EQ(figures.awayFromBoundary, 0u) << label.str();
+    EXPECT_EQ(figures.reportedAwayFromBoundary, figures.awayFromBoundary) << label.str();
+    const double smallest = figures.smallestAngle;
     double total = 0;
     for (int s = 0; s < K; ++s)
     {
@@ -139,8 +74,8 @@ TEST_P(CompatibleSubdomainSurfaces, ClosedManifoldOutwardAndVolumesAddUp)
     if (exceptions > 0)
     {
       std::cout << "[ figure ] " << label.str() << ": " << exceptions
-                << " interface triangles under 20.7 degrees (" << interior
-                << " of them not touching the boundary), smallest " << smallest << " degrees\n";
+                << " interface triangles under 20.7 degrees, all next to the boundary, smallest "
+                << smallest << " degrees\n";
     }
   }
 }

@@ -233,6 +233,37 @@ TEST(InterfaceTriangulation, DeterministicAndBoundsRespected)
   const auto fine = triangulateInterface(r, options);
   check(r, fine, 28);
   EXPECT_GT(fine.triangulation.triangles.size(), 3 * a.triangulation.triangles.size());
+  // the maximum edge length holds away from the boundary (spacing 0.063,
+  // never split): in every triangle without a boundary point whose
+  // circumcircle reaches no boundary segment
+  const auto& t = fine.triangulation;
+  const Index boundaryCount = static_cast<Index>(r.points.size());
+  auto at = [&](Index i) { return t.newPoints[i - boundaryCount]; };
+  double longest = 0;
+  std::size_t away = 0;
+  for (const Triangle& tri : t.triangles)
+  {
+    if (*std::min_element(tri.begin(), tri.end()) < boundaryCount)
+    {
+      continue;
+    }
+    const Vec3 a = at(tri[0]), u = at(tri[1]) - a, v = at(tri[2]) - a, w = cross(u, v);
+    const Vec3 centre = a + (1.0 / (2.0 * dot(w, w))) * (dot(u, u) * cross(v, w) + dot(v, v) * cross(w, u));
+    bool reaches = false;
+    for (const auto& e : r.edges)
+    {
+      const Vec3 p = r.points[e[0]], q = r.points[e[1]];
+      const double s = std::clamp(dot(centre - p, q - p) / dot(q - p, q - p), 0.0, 1.0);
+      reaches = reaches || norm(centre - (p + s * (q - p))) < norm(centre - a);
+    }
+    if (!reaches)
+    {
+      ++away;
+      longest = std::max({ longest, norm(u), norm(v), norm(v - u) });
+    }
+  }
+  EXPECT_GT(away, t.triangles.size() / 2);
+  EXPECT_LE(longest, 0.05 * (1 + 1e-12));
 }
 
 TEST(InterfaceTriangulation, ClearErrors)

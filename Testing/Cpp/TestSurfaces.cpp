@@ -1,7 +1,9 @@
 #include "TestSurfaces.h"
 
+#include "InterfaceTriangulation.h"
 #include "OffFormat.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <utility>
@@ -190,5 +192,105 @@ std::vector<NamedSurface> namedTestSurfaces()
     // coordinates, a through hole, a slot, a boss
     { "bracket", readOffFile(PTM_DATA_DIR "/bracket.off").data.surface },
   };
+}
+
+DecompositionOptions stageCaseOptions(int K, CutStrategy strategy)
+{
+  DecompositionOptions options;
+  options.numberOfSubdomains = K;
+  options.strategy = strategy;
+  options.direction = strategy == CutStrategy::ParallelPlanes ? CutDirection::LongestExtent : CutDirection::Inertia;
+  return options;
+}
+
+InterfaceFigures triangulateAllInterfaces(SurfaceComplex& c)
+{
+  InterfaceFigures figures;
+  if (c.trianglePlanes.size() != c.triangles.size())
+  {
+    c.trianglePlanes.assign(c.triangles.size(), -1);
+  }
+  for (const InterfaceRegion& region : c.interfaces)
+  {
+    std::vector<Index> points;
+    for (const auto& e : region.edges)
+    {
+      points.push_back(e[0]);
+    }
+    std::sort(points.begin(), points.end());
+    points.erase(std::unique(points.begin(), points.end()), points.end());
+    std::map<Index, Index> local;
+    PlanarRegion planar;
+    planar.origin = c.planes[region.planeId].origin;
+    planar.normal = c.planes[region.planeId].normal;
+    for (Index p : points)
+    {
+      local[p] = static_cast<Index>(planar.points.size());
+      planar.points.push_back(c.points[p]);
+    }
+    for (const auto& e : region.edges)
+    {
+      planar.edges.push_back({ local[e[0]], local[e[1]] });
+    }
+    const InterfaceTriangulationResult r = triangulateInterface(planar, {});
+    if (!r.ok)
+    {
+      figures.ok = false;
+      figures.error = r.error;
+      return figures;
+    }
+    figures.exceptions += r.triangulation.trianglesBelowMinimumAngle;
+    figures.smallestAngle = std::min(figures.smallestAngle, r.triangulation.minimumAngleDegrees);
+    figures.reportedAwayFromBoundary += r.triangulation.trianglesBelowMinimumAngleAwayFromBoundary;
+    const Index boundaryCount = static_cast<Index>(planar.points.size());
+    for (const Triangle& t : r.triangulation.triangles)
+    {
+      auto at = [&](Index i) {
+        return i < boundaryCount ? planar.points[i] : r.triangulation.newPoints[i - boundaryCount];
+      };
+      const Vec3 a = at(t[0]), b = at(t[1]), d = at(t[2]);
+      auto angle = [](const Vec3& p, const Vec3& q, const Vec3& w) {
+        return std::atan2(norm(cross(q - p, w - p)), dot(q - p, w - p)) * 180 / kPi;
+      };
+      if (std::min({ angle(a, b, d), angle(b, d, a), angle(d, a, b) }) >= 20.7)
+      {
+        continue;
+      }
+      if (t[0] < boundaryCount || t[1] < boundaryCount || t[2] < boundaryCount)
+      {
+        continue; // touches the boundary
+      }
+      // circumcentre in 3D: a + (|u|^2 (v x w) + |v|^2 (w x u)) / (2 |w|^2), w = u x v
+      const Vec3 u = b - a, v = d - a, w = cross(u, v);
+      const Vec3 centre = a + (1.0 / (2.0 * dot(w, w))) * (dot(u, u) * cross(v, w) + dot(v, v) * cross(w, u));
+      const double radius = norm(centre - a);
+      bool reaches = false;
+      for (const auto& e : planar.edges)
+      {
+        const Vec3 p = planar.points[e[0]], q = planar.points[e[1]];
+        const double s = std::clamp(dot(centre - p, q - p) / dot(q - p, q - p), 0.0, 1.0);
+        reaches = reaches || norm(centre - (p + s * (q - p))) < radius;
+      }
+      if (!reaches)
+      {
+        ++figures.awayFromBoundary;
+      }
+    }
+    std::vector<Index> global = points;
+    for (const Vec3& p : r.triangulation.newPoints)
+    {
+      global.push_back(static_cast<Index>(c.points.size()));
+      c.points.push_back(p);
+    }
+    for (const Triangle& t : r.triangulation.triangles)
+    {
+      c.triangles.push_back({ global[t[0]], global[t[1]], global[t[2]] });
+      c.trianglePairs.push_back(region.pair);
+      c.sourceFaces.push_back(-1);
+      c.trianglePlanes.push_back(region.planeId);
+    }
+  }
+  c.interfaces.clear();
+  return figures;
 }
 } // namespace ptm::test

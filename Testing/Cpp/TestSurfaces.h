@@ -2,7 +2,9 @@
 #define PTM_TEST_SURFACES_H
 // Closed, outward-oriented test surfaces built exactly in code, so the unit
 // tests know their true volume and need no files.
+#include "SurfaceComplex.h"
 #include "TriangleSurface.h"
+#include "VolumeBalancedDecomposition.h"
 
 #include <string>
 #include <vector>
@@ -33,5 +35,27 @@ struct NamedSurface
 // The surfaces every stage is tested on: ball, box, torus, box with a
 // spherical cavity, two disjoint bodies, and the CAD-like bracket from Data/.
 std::vector<NamedSurface> namedTestSurfaces();
+
+// The decomposition of a stage test case: K subdomains, cut directions
+// along the longest extent for parallel planes and the inertia axes for
+// recursive bisection.
+DecompositionOptions stageCaseOptions(int K, CutStrategy strategy);
+
+// Replaces every interface region of a decomposition by its quality
+// triangulation (default bounds), like the InterfaceTriangulator filter does on
+// one rank: new points appended, interface triangles with their pair and
+// plane. Counts the triangles left under the minimum angle.
+struct InterfaceFigures
+{
+  bool ok = true;
+  std::string error;
+  std::size_t exceptions = 0;         // interface triangles under the minimum angle
+  // ... of them with no boundary point and a circumcircle that reaches no
+  // boundary segment, counted here and by the triangulator
+  std::size_t awayFromBoundary = 0;
+  std::size_t reportedAwayFromBoundary = 0;
+  double smallestAngle = 180;
+};
+InterfaceFigures triangulateAllInterfaces(SurfaceComplex& complex);
 } // namespace ptm::test
 #endif

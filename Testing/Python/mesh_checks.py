@@ -133,3 +133,37 @@ def subdomain_surfaces_closed(table, tris, pairs, count):
         assert v > 0, "subdomain %d has non-positive volume" % s
         volumes.append(v)
     return np.array(volumes)
+
+
+def interface_exceptions(table, tris, pairs, planes, bound):
+    """Interface triangles under `bound` degrees, and how many of them are
+    away from their region's boundary: no point on it and a circumcircle
+    that reaches none of its segments. A region is one plane between one
+    pair; its boundary segments are the edges only one of its triangles
+    uses. Returns (under the bound, of them away from the boundary)."""
+    below = away = 0
+    interface = pairs[:, 1] >= 0
+    for key in np.unique(np.column_stack([planes[interface], pairs[interface]]), axis=0):
+        mine = tris[interface & (planes == key[0]) & (pairs[:, 0] == key[1]) & (pairs[:, 1] == key[2])]
+        edges = np.sort(np.concatenate([mine[:, [0, 1]], mine[:, [1, 2]], mine[:, [2, 0]]]), axis=1)
+        keys, use = np.unique(edges, axis=0, return_counts=True)
+        segments = keys[use == 1]
+        on_boundary = np.zeros(len(table), dtype=bool)
+        on_boundary[segments.ravel()] = True
+        p = table[mine]
+        angles = []
+        for a, b, c in ((0, 1, 2), (1, 2, 0), (2, 0, 1)):
+            u, v = p[:, b] - p[:, a], p[:, c] - p[:, a]
+            angles.append(np.degrees(np.arctan2(np.linalg.norm(np.cross(u, v), axis=1), np.einsum("ij,ij->i", u, v))))
+        bad = np.min(angles, axis=0) < bound
+        below += int(bad.sum())
+        s0, s1 = table[segments[:, 0]], table[segments[:, 1]]
+        for t in np.where(bad & ~on_boundary[mine].any(axis=1))[0]:
+            a, u, v = p[t, 0], p[t, 1] - p[t, 0], p[t, 2] - p[t, 0]
+            w = np.cross(u, v)
+            centre = a + (np.dot(u, u) * np.cross(v, w) + np.dot(v, v) * np.cross(w, u)) / (2 * np.dot(w, w))
+            d = s1 - s0
+            s = np.clip(np.einsum("ij,ij->i", centre - s0, d) / np.einsum("ij,ij->i", d, d), 0, 1)
+            if np.linalg.norm(centre - (s0 + s[:, None] * d), axis=1).min() >= np.linalg.norm(centre - a):
+                away += 1
+    return below, away
