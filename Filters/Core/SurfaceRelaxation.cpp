@@ -11,6 +11,8 @@ namespace ptm
 namespace
 {
 constexpr double kDegree = 3.14159265358979323846 / 180.0;
+// a node whose worst incident angle is below this gets the directed search
+constexpr double kPoorAngleDegrees = 20.0;
 
 double minimumAngle(const Vec3& a, const Vec3& b, const Vec3& c)
 {
@@ -123,6 +125,7 @@ RelaxationResult relaxSurfaceComplex(SurfaceComplex& c, const RelaxationOptions&
   const double cosFeature = std::cos(options.featureAngleDegrees * kDegree);
   std::vector<std::vector<Index>> featureNeighbours(n);
   std::vector<std::set<Index>> neighbours(n);
+  std::map<std::pair<Index, Index>, std::vector<int>> featureKind;
   for (const auto& [edge, ts] : edgeTriangles)
   {
     neighbours[edge.first].insert(edge.second);
@@ -144,6 +147,15 @@ RelaxationResult relaxSurfaceComplex(SurfaceComplex& c, const RelaxationOptions&
     {
       featureNeighbours[edge.first].push_back(edge.second);
       featureNeighbours[edge.second].push_back(edge.first);
+      // which patches meet along it: a contour {-1, p}, a plane-plane line
+      // {p, q}, a sharp surface crease {-1, -1}
+      std::vector<int> meeting;
+      for (std::size_t t : ts)
+      {
+        meeting.push_back(patchOf(t));
+      }
+      std::sort(meeting.begin(), meeting.end());
+      featureKind[edge] = meeting;
     }
   }
   std::vector<NodeKind> kind(n, NodeKind::Fixed);
@@ -157,6 +169,23 @@ RelaxationResult relaxSurfaceComplex(SurfaceComplex& c, const RelaxationOptions&
     patch[v] = patchOf(trianglesOf[v][0]);
     const std::size_t f = featureNeighbours[v].size();
     kind[v] = f == 0 ? NodeKind::Free : f == 2 ? NodeKind::Sliding : NodeKind::Fixed;
+    if (kind[v] == NodeKind::Sliding)
+    {
+      // a node slides only along one feature curve that runs straight on
+      // through it: where a contour meets a surface crease, or where the curve
+      // turns by more than the feature angle, sliding would leave the plane or
+      // cut the corner, so the node is a corner and stays put
+      const Index a = featureNeighbours[v][0], b = featureNeighbours[v][1];
+      const Index w = static_cast<Index>(v);
+      const auto& kindA = featureKind[{ std::min(w, a), std::max(w, a) }];
+      const auto& kindB = featureKind[{ std::min(w, b), std::max(w, b) }];
+      const Vec3 ta = normalized(c.points[a] - c.points[v]), tb = normalized(c.points[b] - c.points[v]);
+      const bool straightOn = dot(ta, tb) <= -cosFeature;
+      if (kindA != kindB || !straightOn)
+      {
+        kind[v] = NodeKind::Fixed;
+      }
+    }
   }
   // region: nodes within `rings` rings of a node on a cutting plane
   std::vector<char> active(n, 1);
@@ -258,12 +287,17 @@ RelaxationResult relaxSurfaceComplex(SurfaceComplex& c, const RelaxationOptions&
         best = x;
       }
     };
+    // only segments of the same curve: past a corner w the next feature edge
+    // may be another curve (a crease leaving the plane)
+    auto kindOf = [&](Index a, Index b) -> const std::vector<int>& {
+      return featureKind.at({ std::min(a, b), std::max(a, b) });
+    };
     for (Index w : featureNeighbours[v])
     {
       segment(v, w);
       for (Index u : featureNeighbours[w])
       {
-        if (u != v)
+        if (u != v && kindOf(w, u) == kindOf(v, w))
         {
           segment(w, u);
         }
@@ -326,13 +360,48 @@ RelaxationResult relaxSurfaceComplex(SurfaceComplex& c, const RelaxationOptions&
           break;
         }
       }
+      if (!accepted)
+      {
+        c.points[v] = start;
+      }
+      // Smoothing alone leaves thin triangles whose nodes are pinned to a
+      // curve or sit next to one (the centroid is not where the worst angle
+      // improves). Where the worst angle around the node is still poor, try
+      // short moves towards each neighbour (along the curve for sliding
+      // nodes) and keep the one that raises the worst angle most.
+      const double current = worstAngle(static_cast<Index>(v));
+      if (current < kPoorAngleDegrees * kDegree)
+      {
+        const Vec3 from = c.points[v];
+        Vec3 best = from;
+        double bestAngle = current;
+        for (Index w : along)
+        {
+          for (double fraction : { 0.05, 0.15, 0.3 })
+          {
+            const Vec3 q = from + fraction * (c.points[w] - from);
+            c.points[v] = kind[v] == NodeKind::Sliding ? projectSliding(static_cast<Index>(v), q)
+                                                       : projectFree(static_cast<Index>(v), q);
+            if (valid(static_cast<Index>(v)))
+            {
+              const double angle = worstAngle(static_cast<Index>(v));
+              if (angle > bestAngle)
+              {
+                bestAngle = angle;
+                best = c.points[v];
+              }
+            }
+          }
+        }
+        c.points[v] = best;
+        accepted = accepted || bestAngle > current;
+      }
       if (accepted)
       {
         ++result.acceptedMoves;
       }
       else
       {
-        c.points[v] = start;
         ++result.rejectedMoves;
       }
     }
