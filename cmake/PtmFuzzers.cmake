@@ -18,6 +18,6 @@ if (PTM_BUILD_FUZZERS)
   endif ()
   add_compile_options(-fsanitize=fuzzer-no-link)
   # How long CTest's short run of each fuzzer lasts, in seconds.
-  set(PTM_FUZZ_SECONDS 45 CACHE STRING "Seconds of each fuzzer's CTest run")
+  set(PTM_FUZZ_SECONDS 120 CACHE STRING "Seconds of each fuzzer's CTest run")
   message(STATUS "PTM_BUILD_FUZZERS: fuzz targets in Testing/Fuzz, ${PTM_FUZZ_SECONDS} s each in CTest")
 endif ()
