@@ -64,8 +64,8 @@ double longestEdge(const Point& a, const Point& b, const Point& c)
     { CGAL::squared_distance(a, b), CGAL::squared_distance(b, c), CGAL::squared_distance(c, a) }));
 }
 
-// How far the triangles around v would fall short of the angle bound if v
-// stood at p: the sum of the deficits, then (negated, as a tie-break) the
+// How far the triangles around v (a new point, never a boundary point) would
+// fall short of the angle bound if v stood at p: the sum of the deficits, then (negated, as a tie-break) the
 // smallest angle; infinite if one of them would be inverted or degenerate,
 // or would get an edge longer than both the size field allows (sizeFactor x
 // the mean size of its corners) and it has now.
@@ -90,8 +90,8 @@ std::pair<double, double> starShortfallAt(
     const double angle = minimumAngle(p, a, b);
     // a triangle with a boundary point may be forced to be poor by the
     // boundary; one without may not, so a move must not make it poor
-    if (angle < bound && v->info().index >= boundaryCount && va->info().index >= boundaryCount &&
-      vb->info().index >= boundaryCount && minimumAngle(v->point(), a, b) >= bound)
+    if (angle < bound && va->info().index >= boundaryCount && vb->info().index >= boundaryCount &&
+      minimumAngle(v->point(), a, b) >= bound)
     {
       return { std::numeric_limits<double>::infinity(), 0 };
     }
