@@ -189,8 +189,9 @@ int vtkParallelTetMesher::RequestData(
       }
       if (r.attempts > 1)
       {
-        vtkWarningMacro(<< where.str() << "TetGen crashed with the points in their canonical order and "
-                        << "meshed them in another order (attempt " << r.attempts << ")");
+        vtkWarningMacro(<< where.str() << "TetGen crashed or stalled with the points in their "
+                        << "canonical order and meshed them in another order (attempt " << r.attempts
+                        << ")");
       }
       meshes[k] = std::move(r.mesh);
     }

@@ -5,11 +5,13 @@
 #include <tetgen.h>
 
 #include <csignal>
+#include <poll.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -187,13 +189,38 @@ struct ChildHeader
   long long tets = 0;
 };
 
+// Waits until fd has data to read or the time limit has passed; false on
+// timeout.
+bool waitReadable(int fd, double seconds)
+{
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  for (;;)
+  {
+    const double left = std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count();
+    if (left <= 0)
+    {
+      return false;
+    }
+    pollfd p{ fd, POLLIN, 0 };
+    const int r = ::poll(&p, 1, static_cast<int>(std::min(left * 1000.0 + 1.0, 60000.0)));
+    if (r > 0 || (r < 0 && errno != EINTR))
+    {
+      return true; // data, end of file or an error: the read tells which
+    }
+  }
+}
+
 // Runs TetGen in a child process: libtet 1.5 frees its memory in
 // terminatetetgen() and again in the destructor while the int it throws
 // unwinds, so every TetGen failure would otherwise crash the whole
-// (MPI, ParaView) process. The child sends the mesh back through a pipe.
-bool runTetGenIsolated(tetgenio& in, const std::string& switches, std::vector<double>& points,
-  std::vector<int>& tets, int& status, int& code, std::string& error)
+// (MPI, ParaView) process. The child sends the mesh back through a pipe. On
+// some inputs TetGen 1.5 loops for ever in boundary recovery (switch Y):
+// a child still running after timeLimitSeconds is killed (timedOut).
+bool runTetGenIsolated(tetgenio& in, const std::string& switches, double timeLimitSeconds,
+  std::vector<double>& points, std::vector<int>& tets, int& status, int& code, bool& timedOut,
+  std::string& error)
 {
+  timedOut = false;
   int fds[2];
   if (::pipe(fds) != 0)
   {
@@ -259,6 +286,23 @@ bool runTetGenIsolated(tetgenio& in, const std::string& switches, std::vector<do
     ::_exit(ok ? 0 : 1);
   }
   ::close(fds[1]);
+  if (!waitReadable(fds[0], timeLimitSeconds))
+  {
+    ::kill(pid, SIGKILL);
+    ::close(fds[0]);
+    while (::waitpid(pid, nullptr, 0) < 0 && errno == EINTR)
+    {
+    }
+    std::ostringstream msg;
+    msg << "TetGen did not finish within " << timeLimitSeconds
+        << " s and was stopped (TetGen 1.5 can loop for ever recovering the boundary of "
+           "nearly degenerate input)";
+    error = msg.str();
+    timedOut = true;
+    status = 1;
+    code = 0;
+    return false;
+  }
   ChildHeader h;
   bool received = readAll(fds[0], &h, sizeof(h));
   if (received && h.status == 0)
@@ -277,10 +321,10 @@ bool runTetGenIsolated(tetgenio& in, const std::string& switches, std::vector<do
   {
     if (WIFSIGNALED(waitStatus))
     {
-      error = "TetGen failed and then crashed in its own clean-up (signal " +
-        std::to_string(WTERMSIG(waitStatus)) +
-        ", a defect of libtet 1.5), so its error code is lost; the usual causes are a very "
-        "small input feature or two very close facets";
+      error = "TetGen crashed (signal " + std::to_string(WTERMSIG(waitStatus)) +
+        ": an internal assertion, or its clean-up after an error, a defect of libtet 1.5), so "
+        "its error code is lost; the usual causes are a very small input feature or two very "
+        "close facets";
     }
     else
     {
@@ -366,10 +410,12 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
     return r;
   }
   if (!(options.radiusEdgeRatio > 1.0) || !(options.maximumVolume >= 0) ||
-    !(options.minimumDihedralAngle >= 0 && options.minimumDihedralAngle < 70))
+    !(options.minimumDihedralAngle >= 0 && options.minimumDihedralAngle < 70) ||
+    !(options.timeLimitSeconds >= 0))
   {
-    r.error = "invalid options: the radius-edge ratio must exceed 1, the maximum volume must not "
-              "be negative, the minimum dihedral angle must lie in [0, 70) degrees";
+    r.error = "invalid options: the radius-edge ratio must exceed 1, the maximum volume and the "
+              "time limit must not be negative, the minimum dihedral angle must lie in [0, 70) "
+              "degrees";
     return r;
   }
   if (!validExtraSwitches(options.extraSwitches))
@@ -457,15 +503,25 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
   switches << "a" << volume << options.extraSwitches;
   r.switchesUsed = switches.str();
 
-  // TetGen 1.5 sometimes aborts on an assertion in its symbolic
-  // perturbation (insphere_s: oriB != 0) for an input it can mesh when the
-  // points come in another order; its result does not depend on the order
-  // otherwise. So a crash or an internal error is retried with the points
+  // TetGen 1.5 sometimes aborts on an assertion (insphere_s: oriB != 0,
+  // finddirection: nonconvex) or loops for ever in boundary recovery for an
+  // input it meshes when the points come in another order. So a crash, an
+  // internal error or a run over the time limit is retried with the points
   // reversed, then shuffled (a fixed seed): still the same mesh for the same
   // input on any rank.
   std::vector<double> outPoints;
   std::vector<int> outTets;
   std::vector<Index> order(n); // input position -> surface point
+  // a generous limit: 60 s plus 10 microseconds per expected tetrahedron
+  // (TetGen makes about 190,000 per second on one core here)
+  double expectedVolume = 0;
+  for (const auto& t : s.triangles)
+  {
+    expectedVolume += dot(s.points[t[0]], cross(s.points[t[1]], s.points[t[2]])) / 6.0;
+  }
+  const double timeLimit = options.timeLimitSeconds > 0
+    ? options.timeLimitSeconds
+    : 60.0 + 1e-5 * estimateTetMesh(std::fabs(expectedVolume), volume).tetrahedra;
   bool meshed = false;
   std::string failure;
   int status = 0, code = 0;
@@ -497,7 +553,9 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
     outTets.clear();
     failure.clear();
     status = code = 0;
-    const bool ran = runTetGenIsolated(in, r.switchesUsed, outPoints, outTets, status, code, failure);
+    bool timedOut = false;
+    const bool ran =
+      runTetGenIsolated(in, r.switchesUsed, timeLimit, outPoints, outTets, status, code, timedOut, failure);
     meshed = ran && status == 0;
     r.attempts = attempt + 1;
     const bool retry = !ran || (status == 1 && code == 2);
