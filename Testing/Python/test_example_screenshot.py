@@ -82,8 +82,11 @@ def check_image(path):
 def start_xvfb():
     """Xvfb on the first free display; returns (process, ":N")."""
     read_end, write_end = os.pipe()
+    # -noreset: by default Xvfb resets whenever its last client disconnects and
+    # refuses connections meanwhile, so one rank closing its probe connection
+    # made the other rank's XOpenDisplay fail ("bad X server connection")
     xvfb = subprocess.Popen(["Xvfb", "-displayfd", str(write_end), "-screen", "0", "1280x1024x24",
-                             "-nolisten", "tcp"], pass_fds=(write_end,), stdin=subprocess.DEVNULL,
+                             "-noreset", "-nolisten", "tcp"], pass_fds=(write_end,), stdin=subprocess.DEVNULL,
                             stderr=subprocess.DEVNULL, start_new_session=True)
     os.close(write_end)
     number = b""
