@@ -126,6 +126,11 @@ renderView1.CameraParallelProjection = 1
 renderView1.ResetCamera(False)
 GetActiveCamera().Zoom(1.15)
 
+# in the GUI: no clip-plane widget over the mesh, and the mesher's
+# properties in the Properties panel
+Hide3DWidgets(proxy=clip1.ClipType)
+SetActiveSource(parallelTetMesher1)
+
 # File > Save Screenshot
 SaveScreenshot(SCREENSHOT, renderView1, ImageResolution=[1200, 800], FontScaling='Do not scale fonts')
 print("mesh_in_paraview: %d tetrahedra in %d subdomains, %d shown after the clip; wrote %s" % (
