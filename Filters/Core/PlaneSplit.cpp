@@ -462,6 +462,32 @@ bool splitCell(SurfaceComplex& c, int cell, const Vec3& n, double offset, int pl
       }
     }
   }
+  // Every piece must still be bounded by closed loops. Vertices snapped onto
+  // the plane can make a boundary run zig-zag along the cutting line, and
+  // then the edges lying in it fall to both sides; the caller retries with
+  // less snapping rather than keep a region with a hole.
+  std::vector<const InterfaceRegion*> pieces;
+  for (std::size_t r : regions)
+  {
+    pieces.push_back(&c.interfaces[r]);
+  }
+  for (const InterfaceRegion& piece : newRegions)
+  {
+    pieces.push_back(&piece);
+  }
+  for (const InterfaceRegion* piece : pieces)
+  {
+    std::vector<std::vector<Index>> loops;
+    if (!chainLoops(piece->edges, loops))
+    {
+      std::ostringstream msg;
+      msg << "cutting plane " << planeId << " split an interface of plane " << piece->planeId
+          << " into pieces that are not closed (its boundary runs along the cutting line within "
+             "the snapping distance)";
+      error = msg.str();
+      return false;
+    }
+  }
   for (auto& region : newRegions)
   {
     c.interfaces.push_back(std::move(region));
