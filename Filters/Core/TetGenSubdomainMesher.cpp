@@ -6,6 +6,7 @@
 
 #include <csignal>
 #include <poll.h>
+#include <sys/resource.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -215,10 +216,13 @@ bool waitReadable(int fd, double seconds)
 // unwinds, so every TetGen failure would otherwise crash the whole
 // (MPI, ParaView) process. The child sends the mesh back through a pipe. On
 // some inputs TetGen 1.5 loops for ever in boundary recovery (switch Y):
-// a child still running after timeLimitSeconds is killed (timedOut).
-bool runTetGenIsolated(tetgenio& in, const std::string& switches, double timeLimitSeconds,
-  std::vector<double>& points, std::vector<int>& tets, int& status, int& code, bool& timedOut,
-  std::string& error)
+// a child that has used more than cpuSeconds of processor time is stopped by
+// the kernel (RLIMIT_CPU, so a loaded or oversubscribed machine does not
+// stop a run that is merely slow), and one still running after wallSeconds
+// is killed; both set timedOut.
+bool runTetGenIsolated(tetgenio& in, const std::string& switches, double cpuSeconds,
+  double wallSeconds, std::vector<double>& points, std::vector<int>& tets, int& status, int& code,
+  bool& timedOut, std::string& error)
 {
   timedOut = false;
   int fds[2];
@@ -241,6 +245,11 @@ bool runTetGenIsolated(tetgenio& in, const std::string& switches, double timeLim
     std::signal(SIGSEGV, SIG_DFL);
     std::signal(SIGABRT, SIG_DFL);
     std::signal(SIGBUS, SIG_DFL);
+    std::signal(SIGXCPU, SIG_DFL);
+    // SIGXCPU at the soft limit, SIGKILL a second later
+    const rlim_t cpu = static_cast<rlim_t>(std::ceil(cpuSeconds));
+    const rlimit limit{ cpu, cpu + 1 };
+    ::setrlimit(RLIMIT_CPU, &limit);
     ChildHeader h;
     tetgenio out;
     try
@@ -286,7 +295,7 @@ bool runTetGenIsolated(tetgenio& in, const std::string& switches, double timeLim
     ::_exit(ok ? 0 : 1);
   }
   ::close(fds[1]);
-  if (!waitReadable(fds[0], timeLimitSeconds))
+  if (!waitReadable(fds[0], wallSeconds))
   {
     ::kill(pid, SIGKILL);
     ::close(fds[0]);
@@ -294,7 +303,7 @@ bool runTetGenIsolated(tetgenio& in, const std::string& switches, double timeLim
     {
     }
     std::ostringstream msg;
-    msg << "TetGen did not finish within " << timeLimitSeconds
+    msg << "TetGen did not finish within " << wallSeconds
         << " s and was stopped (TetGen 1.5 can loop for ever recovering the boundary of "
            "nearly degenerate input)";
     error = msg.str();
@@ -319,7 +328,16 @@ bool runTetGenIsolated(tetgenio& in, const std::string& switches, double timeLim
   }
   if (!received)
   {
-    if (WIFSIGNALED(waitStatus))
+    if (WIFSIGNALED(waitStatus) && WTERMSIG(waitStatus) == SIGXCPU)
+    {
+      std::ostringstream msg;
+      msg << "TetGen used more than " << std::ceil(cpuSeconds)
+          << " s of processor time and was stopped (TetGen 1.5 can loop for ever recovering the "
+             "boundary of nearly degenerate input)";
+      error = msg.str();
+      timedOut = true;
+    }
+    else if (WIFSIGNALED(waitStatus))
     {
       error = "TetGen crashed (signal " + std::to_string(WTERMSIG(waitStatus)) +
         ": an internal assertion, or its clean-up after an error, a defect of libtet 1.5), so "
@@ -512,16 +530,21 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
   std::vector<double> outPoints;
   std::vector<int> outTets;
   std::vector<Index> order(n); // input position -> surface point
-  // a generous limit: 60 s plus 10 microseconds per expected tetrahedron
-  // (TetGen makes about 190,000 per second on one core here)
+  // Limits: TetGen needs about 5 microseconds of processor time per
+  // tetrahedron here (190,000 per second); a run gets 2 s plus 30 us per
+  // expected tetrahedron (the volume estimate plus 4 per surface triangle),
+  // six times that, and the wall clock the old generous 60 s plus 10 us
+  // per tetrahedron, which only matters when the machine is swapping.
   double expectedVolume = 0;
   for (const auto& t : s.triangles)
   {
     expectedVolume += dot(s.points[t[0]], cross(s.points[t[1]], s.points[t[2]])) / 6.0;
   }
-  const double timeLimit = options.timeLimitSeconds > 0
-    ? options.timeLimitSeconds
-    : 60.0 + 1e-5 * estimateTetMesh(std::fabs(expectedVolume), volume).tetrahedra;
+  const double expectedTets = estimateTetMesh(std::fabs(expectedVolume), volume).tetrahedra +
+    4.0 * static_cast<double>(s.triangles.size());
+  const double cpuLimit = options.timeLimitSeconds > 0 ? options.timeLimitSeconds : 2.0 + 3e-5 * expectedTets;
+  const double wallLimit =
+    options.timeLimitSeconds > 0 ? options.timeLimitSeconds : 60.0 + 1e-5 * expectedTets;
   bool meshed = false;
   std::string failure;
   int status = 0, code = 0;
@@ -555,7 +578,7 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
     status = code = 0;
     bool timedOut = false;
     const bool ran =
-      runTetGenIsolated(in, r.switchesUsed, timeLimit, outPoints, outTets, status, code, timedOut, failure);
+      runTetGenIsolated(in, r.switchesUsed, cpuLimit, wallLimit, outPoints, outTets, status, code, timedOut, failure);
     meshed = ran && status == 0;
     r.attempts = attempt + 1;
     const bool retry = !ran || (status == 1 && code == 2);

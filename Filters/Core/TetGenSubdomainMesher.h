@@ -12,9 +12,9 @@
 // leaves them empty. TetGen's failures (it throws an int) become ok = false
 // with the code and its meaning. TetGen 1.5 sometimes aborts on an
 // assertion, or loops for ever in boundary recovery, for an input it meshes
-// when the points come in another order: then (a crash, or a run over the
-// time limit, which is killed) it runs again with the points reversed, then
-// shuffled with a fixed seed. The same input and options give the same mesh.
+// when the points come in another order: then (a crash, or a run over its
+// processor-time limit, which is stopped) it runs again with the points
+// reversed, then shuffled with a fixed seed. The same input and options give the same mesh.
 #include "TriangleSurface.h"
 
 #include <string>
@@ -27,7 +27,9 @@ struct TetMeshingOptions
   double minimumDihedralAngle = 0.0; // second -q value in degrees; 0: TetGen's default
   double maximumVolume = 0.0;        // -a; 0: regular tetrahedron of the mean surface edge
   std::string extraSwitches;         // only O, S, T, V with numbers (what cannot break the contract)
-  double timeLimitSeconds = 0.0;     // per TetGen run; 0: 60 s + 10 us per expected tetrahedron
+  // per TetGen run, processor and wall time; 0: 2 s + 30 us of processor time
+  // per expected tetrahedron (about 6x TetGen's speed), 60 s + 10 us of wall time
+  double timeLimitSeconds = 0.0;
 };
 
 struct TetMesh
