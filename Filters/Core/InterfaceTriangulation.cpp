@@ -127,6 +127,14 @@ void smoothBadTriangles(CDT& cdt, std::size_t boundaryCount, double bound, doubl
       const Point start = v->point();
       auto best = starShortfallAt(cdt, v, start, static_cast<Index>(boundaryCount), bound, sizeFactor);
       Point bestPoint = start;
+      // A move may lower the sum of the deficits only if it does not make the
+      // star's worst triangle worse (below the bound): otherwise it would
+      // trade several poor triangles for one sliver, such as a point pushed
+      // almost onto a boundary segment.
+      const double worstFloor = std::min(-best.second, bound);
+      auto better = [&](const std::pair<double, double>& candidate) {
+        return -candidate.second >= worstFloor && candidate < best;
+      };
       // candidates: the centroid of the neighbours, then a pattern search
       double cx = 0, cy = 0, shortest = std::numeric_limits<double>::infinity();
       int count = 0;
@@ -140,7 +148,7 @@ void smoothBadTriangles(CDT& cdt, std::size_t boundaryCount, double bound, doubl
       } while (++w != done);
       const Point centroid(cx / count, cy / count);
       const auto atCentroid = starShortfallAt(cdt, v, centroid, static_cast<Index>(boundaryCount), bound, sizeFactor);
-      if (atCentroid < best)
+      if (better(atCentroid))
       {
         best = atCentroid;
         bestPoint = centroid;
@@ -156,7 +164,7 @@ void smoothBadTriangles(CDT& cdt, std::size_t boundaryCount, double bound, doubl
             const double a = d * kPi / 4;
             const Point q(bestPoint.x() + step * std::cos(a), bestPoint.y() + step * std::sin(a));
             const auto shortfall = starShortfallAt(cdt, v, q, static_cast<Index>(boundaryCount), bound, sizeFactor);
-            if (shortfall < best)
+            if (better(shortfall))
             {
               best = shortfall;
               bestPoint = q;
@@ -226,7 +234,10 @@ void smoothBadTriangles(CDT& cdt, std::size_t boundaryCount, double bound, doubl
         };
         const auto now = shortfall(minimumAngle(p, u, t), minimumAngle(q, t, u));
         const auto then = shortfall(minimumAngle(p, u, q), minimumAngle(p, q, t));
-        if (then.first < now.first - 1e-12 || (then.first <= now.first && then.second < now.second - 1e-12))
+        // and, like a move, never at the price of a worse smallest angle
+        const bool noWorse = -then.second >= std::min(-now.second, bound);
+        if (noWorse &&
+          (then.first < now.first - 1e-12 || (then.first <= now.first && then.second < now.second - 1e-12)))
         {
           cdt.flip(f, i);
           flipped = true;
@@ -425,6 +436,12 @@ InterfaceTriangulationResult triangulateInterface(
       result.error = "the loops are not consistently oriented (a segment has the region on both sides)";
       return result;
     }
+  }
+
+  if (!options.refine)
+  {
+    result.ok = true; // the boundary is valid; no triangles wanted
+    return result;
   }
 
   // Refinement.
@@ -630,6 +647,17 @@ InterfaceTriangulationResult triangulateInterface(
         candidates.push_back({ Point(middle.x() + h * ux, middle.y() + h * uy), clearance });
       }
     }
+    else
+    {
+      // a flat triangle (an obtuse angle near 180 degrees, as over a boundary
+      // point where the boundary runs straight on) has its circumcentre
+      // behind the shortest edge: try the apex of the equilateral triangle on
+      // that edge, and half way to it
+      for (double h : { nearest, 0.5 * nearest })
+      {
+        candidates.push_back({ Point(middle.x() + h * ux, middle.y() + h * uy), clearance });
+      }
+    }
     for (const auto& [candidate, distance] : candidates)
     {
       Face located;
@@ -686,6 +714,14 @@ InterfaceTriangulationResult triangulateInterface(
     }
     return false;
   };
+  auto at3D = [&](Index i) { return i < static_cast<Index>(n) ? region.points[i] : t.newPoints[i - n]; };
+  auto minimumAngle3D = [](const Vec3& a, const Vec3& b, const Vec3& c) {
+    auto angle = [](const Vec3& p, const Vec3& q, const Vec3& r) {
+      const Vec3 u = q - p, v = r - p;
+      return std::atan2(norm(cross(u, v)), dot(u, v)) * 180.0 / kPi;
+    };
+    return std::min({ angle(a, b, c), angle(b, c, a), angle(c, a, b) });
+  };
   t.minimumAngleDegrees = 180;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
   {
@@ -694,7 +730,9 @@ InterfaceTriangulationResult triangulateInterface(
       continue;
     }
     t.triangles.push_back({ f->vertex(0)->info().index, f->vertex(1)->info().index, f->vertex(2)->info().index });
-    const double angle = minimumAngle(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()) * 180.0 / kPi;
+    // measured on the output in 3D: boundary points may lie off the plane
+    // (snapped onto it by the cutter), so their projection can differ
+    const double angle = minimumAngle3D(at3D(t.triangles.back()[0]), at3D(t.triangles.back()[1]), at3D(t.triangles.back()[2]));
     t.minimumAngleDegrees = std::min(t.minimumAngleDegrees, angle);
     if (angle < options.minimumAngleDegrees)
     {

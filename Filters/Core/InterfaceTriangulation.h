@@ -40,6 +40,7 @@ struct InterfaceTriangulationOptions
 {
   double minimumAngleDegrees = 20.7; // (0, 34]
   double maximumEdgeLength = 0.0;    // 0: sizing from the boundary spacing, graded inward
+  bool refine = true;                // false: only check the boundary (every error below), no triangles
 };
 
 struct InterfaceTriangulation

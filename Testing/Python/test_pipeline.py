@@ -77,8 +77,13 @@ def check_case(base, K):
     fd = complex_data.GetFieldData()
     counted = int(vtk_to_numpy(fd.GetArray("InterfaceTrianglesBelowMinimumAngle"))[0])
     counted_away = int(vtk_to_numpy(fd.GetArray("InterfaceTrianglesBelowMinimumAngleAwayFromBoundary"))[0])
+    # the triangulator measures angles in the plane, here they are measured
+    # in 3D: a triangle within 1e-9 degrees of the bound may fall either way
     below, away = interface_exceptions(table, tris, pairs, planes, 20.7 - 1e-9)
-    assert below == counted, "interface triangles under the minimum angle: %d, reported %d" % (below, counted)
+    below_or_at, _ = interface_exceptions(table, tris, pairs, planes, 20.7 + 1e-9)
+    assert below <= counted <= below_or_at, \
+        "interface triangles under the minimum angle: %d (%d counting those within 1e-9 degrees of it), " \
+        "reported %d" % (below, below_or_at, counted)
     assert away == counted_away == 0, \
         "interface triangles under the minimum angle away from the boundary: %d, reported %d" % (away, counted_away)
     balance = float(np.abs(volumes / volumes.mean() - 1).max())
