@@ -22,6 +22,7 @@ constexpr const char* GlobalPointCount = "GlobalPointCount";       // vtkIdType:
 constexpr const char* BalanceCriterionName = "BalanceCriterion";   // string
 constexpr const char* MaximumImbalance = "MaximumImbalance";       // double
 constexpr const char* InputRepairs = "InputRepairs";               // strings: repairs of the input check
+constexpr const char* AlignedCuts = "AlignedCuts";                 // 2 ints: cuts turned parallel to an earlier line, and through it
 constexpr const char* InputMeanEdgeLength = "InputMeanEdgeLength"; // double: the input surface's resolution
 } // namespace ptm::arrays
 #endif

@@ -10,6 +10,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
+#include "vtkIntArray.h"
 #include "vtkInformationVector.h"
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
@@ -73,6 +74,8 @@ int vtkVolumeBalancedCutter::RequestData(
     "NumberOfSubdomains", "be 0 (one per rank) or between 1 and 1000000", this->NumberOfSubdomains);
   checks.Require(this->BalanceTolerance >= 1e-6 && this->BalanceTolerance <= 0.5,
     "BalanceTolerance", "lie in [1e-6, 0.5]", this->BalanceTolerance);
+  checks.Require(this->PlaneAlignmentAngle >= 0 && this->PlaneAlignmentAngle <= 45,
+    "PlaneAlignmentAngle", "lie in [0, 45] degrees", this->PlaneAlignmentAngle);
   checks.Require(this->SelfIntersectionCheckLimit >= 0, "SelfIntersectionCheckLimit",
     "be a number of triangles, 0 or more", this->SelfIntersectionCheckLimit);
   if (!checks.Ok())
@@ -98,6 +101,7 @@ int vtkVolumeBalancedCutter::RequestData(
   options.direction = static_cast<ptm::CutDirection>(this->Direction);
   options.criterion = static_cast<ptm::BalanceCriterion>(this->BalanceCriterion);
   options.balanceTolerance = this->BalanceTolerance;
+  options.alignmentAngleDegrees = this->PlaneAlignmentAngle;
   options.inputCheck.checkSelfIntersections = this->CheckSelfIntersections != 0;
   options.inputCheck.selfIntersectionLimit =
     static_cast<std::size_t>(this->SelfIntersectionCheckLimit);
@@ -172,6 +176,12 @@ int vtkVolumeBalancedCutter::RequestData(
   imbalance->SetName(ptm::arrays::MaximumImbalance);
   imbalance->InsertNextValue(result.maximumImbalance);
   fd->AddArray(imbalance);
+  vtkNew<vtkIntArray> aligned; // cuts turned parallel to an earlier line, and through it
+  aligned->SetName(ptm::arrays::AlignedCuts);
+  aligned->SetNumberOfComponents(2);
+  const int alignedCounts[2] = { result.alignedNormals, result.alignedLines };
+  aligned->InsertNextTypedTuple(alignedCounts);
+  fd->AddArray(aligned);
   vtkNew<vtkStringArray> repairs; // what the input check repaired, as warned
   repairs->SetName(ptm::arrays::InputRepairs);
   for (const std::string& warning : result.warnings)
@@ -192,6 +202,7 @@ void vtkVolumeBalancedCutter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Direction: " << this->Direction << "\n";
   os << indent << "BalanceCriterion: " << this->BalanceCriterion << "\n";
   os << indent << "BalanceTolerance: " << this->BalanceTolerance << "\n";
+  os << indent << "PlaneAlignmentAngle: " << this->PlaneAlignmentAngle << "\n";
   os << indent << "CheckSelfIntersections: " << this->CheckSelfIntersections << "\n";
   os << indent << "SelfIntersectionCheckLimit: " << this->SelfIntersectionCheckLimit << "\n";
   os << indent << "Controller: " << this->Controller << "\n";

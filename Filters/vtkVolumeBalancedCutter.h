@@ -84,6 +84,15 @@ public:
   ///@}
 
   ///@{
+  /// Recursive bisection: a plane whose line on an interface runs within
+  /// this angle of a line an earlier plane drew there turns to run parallel
+  /// to it, and through it where the balance allows, instead of crossing it
+  /// at a sliver (default 15 degrees; 0 turns this off).
+  vtkSetMacro(PlaneAlignmentAngle, double);
+  vtkGetMacro(PlaneAlignmentAngle, double);
+  ///@}
+
+  ///@{
   /// Check the input for self-intersections with CGAL's exact predicates
   /// before cutting (default on). Other input checks always run.
   vtkSetMacro(CheckSelfIntersections, vtkTypeBool);
@@ -117,6 +126,7 @@ protected:
   int Direction = INERTIA;
   int BalanceCriterion = VOLUME;
   double BalanceTolerance = 0.01;
+  double PlaneAlignmentAngle = 15.0;
   vtkTypeBool CheckSelfIntersections = 1;
   vtkIdType SelfIntersectionCheckLimit = 2000000;
   vtkMultiProcessController* Controller = nullptr;

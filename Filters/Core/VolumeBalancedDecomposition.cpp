@@ -1,9 +1,12 @@
 #include "VolumeBalancedDecomposition.h"
 
+#include "InterfaceTriangulation.h"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <map>
 #include <sstream>
 
 namespace ptm
@@ -39,6 +42,8 @@ const char* toString(BalanceCriterion c)
 
 namespace
 {
+constexpr double kPi = 3.14159265358979323846;
+
 // Measure of each final subdomain by the criterion.
 std::vector<double> measureSubdomains(const SurfaceComplex& c, BalanceCriterion criterion,
   const std::vector<double>& volumes)
@@ -97,6 +102,11 @@ DecompositionResult decomposeVolumeBalanced(
     result.error = "the snap fraction must lie in [0, 0.5)";
     return result;
   }
+  if (!(options.alignmentAngleDegrees >= 0 && options.alignmentAngleDegrees <= 45))
+  {
+    result.error = "the plane alignment angle must lie in [0, 45] degrees";
+    return result;
+  }
   PreparedSurface prepared = prepareInputSurface(input, options.inputCheck);
   result.inputCheck = prepared.counts;
   result.warnings = prepared.warnings;
@@ -138,15 +148,14 @@ DecompositionResult decomposeVolumeBalanced(
   // below is within a quarter of the tolerance of one subdomain; if snapping
   // makes that impossible, it is halved step by step down to 0.001 (never 0:
   // a vertex a hair's breadth from the plane would leave a degenerate sliver).
-  auto cut = [&](int cell, const Vec3& normal, double fraction, int parts, int& below,
+  auto cut = [&](int cell, const Vec3& proposedNormal, double fraction, int parts, int& below,
                int& above) -> bool {
-    const HalfSpaceMeasure measure(c, cell, normal, options.criterion);
-    double offset = measure.offsetForFraction(fraction, solveTolerance);
-    if (!(offset > measure.minimumOffset() && offset < measure.maximumOffset()))
-    {
-      error = "the subdomains are too many for this surface: a part cannot be cut further";
-      return false;
-    }
+    // A plane whose line on one of the part's interfaces nearly runs along
+    // a line already drawn there turns so that the two are parallel and
+    // never cross at a tiny angle (PlaneAlignment.h).
+    const NearlyContinuedLine continued =
+      findNearlyContinuedLine(c, cell, proposedNormal, options.alignmentAngleDegrees);
+    const Vec3 normal = continued.found ? continued.parallelNormal : proposedNormal;
     const int planeId = static_cast<int>(c.planes.size());
     const std::vector<Index> points = cellPoints(c, cell);
     Vec3 centroid{ 0, 0, 0 };
@@ -162,83 +171,227 @@ DecompositionResult decomposeVolumeBalanced(
     const double target = fraction * cellVolume;
     const double allowed = 0.25 * options.balanceTolerance * cellVolume / parts;
 
-    SurfaceComplex best;
-    PlaneSplitStats bestStats;
-    double bestError = std::numeric_limits<double>::infinity();
     std::string lastError;
-    // Splits a copy of the complex at `at`; keeps it if it is the best so far.
-    // Returns false if the split failed; `missing` and `area` describe it.
-    auto tryCut = [&](double at, double snap, double& missing, double& area) {
-      SurfaceComplex trial = c;
+    // Splits a copy of the complex by the plane n . x = at; `missing` is the
+    // volume the part below lacks, `area` the cross-section (the rate at
+    // which the volume changes with the offset).
+    struct Trial
+    {
+      bool ok = false;
+      SurfaceComplex complex;
+      PlaneSplitStats stats;
+      double missing = 0, area = 0;
+      double error = std::numeric_limits<double>::infinity();
+    };
+    auto tryCut = [&](const Vec3& n, double at, double snap) {
+      Trial trial;
+      trial.complex = c;
       CuttingPlane plane;
-      plane.normal = normal;
-      plane.origin = centroid - (dot(normal, centroid) - at) * normal;
+      plane.normal = n;
+      plane.origin = centroid - (dot(n, centroid) - at) * n;
       plane.cutSubdomainCount = parts;
-      trial.planes.push_back(plane);
+      trial.complex.planes.push_back(plane);
       PlaneSplitOptions splitOptions;
       splitOptions.snapFraction = snap;
-      PlaneSplitStats stats;
-      if (!splitCell(trial, cell, normal, at, planeId, below, above, splitOptions, stats, lastError))
+      if (!splitCell(trial.complex, cell, n, at, planeId, below, above, splitOptions, trial.stats, lastError))
       {
-        return false;
+        return trial;
       }
-      missing = volumeCriterion ? labelVolume(trial, below) - target : 0.0;
-      // the volume changes with the offset at the rate of the cross-section area
-      area = stats.interfaceEdges == 0
+      trial.ok = true;
+      trial.missing = volumeCriterion ? labelVolume(trial.complex, below) - target : 0.0;
+      trial.error = std::fabs(trial.missing);
+      trial.area = trial.stats.interfaceEdges == 0
         ? 0.0
-        : std::fabs(dot(normal, vectorArea(trial.points, trial.interfaces.back().edges)));
-      if (std::fabs(missing) < bestError)
+        : std::fabs(dot(n, vectorArea(trial.complex.points, trial.complex.interfaces.back().edges)));
+      return trial;
+    };
+    // The balanced cut with normal n: the offset from the measure function,
+    // corrected by Newton steps on the real split, with snapping reduced
+    // when it keeps the balance out of reach. No trial at all if the
+    // measure puts the plane outside the part (tooThin).
+    auto balancedCut = [&](const Vec3& n, double& at, bool& tooThin) {
+      const HalfSpaceMeasure measure(c, cell, n, options.criterion);
+      double offset = measure.offsetForFraction(fraction, solveTolerance);
+      Trial best;
+      at = offset;
+      tooThin = !(offset > measure.minimumOffset() && offset < measure.maximumOffset());
+      if (tooThin)
       {
-        bestError = std::fabs(missing);
-        best = std::move(trial);
-        bestStats = stats;
+        return best;
+      }
+      auto keepIfBetter = [&](Trial&& trial, double trialOffset) {
+        if (trial.ok && trial.error < best.error)
+        {
+          best = std::move(trial);
+          at = trialOffset;
+        }
+      };
+      const double smallestSnap = std::min(options.snapFraction, 0.001);
+      for (double snap = options.snapFraction;; snap = std::max(0.5 * snap, smallestSnap))
+      {
+        for (int attempt = 0; attempt < 4; ++attempt)
+        {
+          Trial trial = tryCut(n, offset, snap);
+          const bool ok = trial.ok;
+          const double missing = trial.missing, area = trial.area;
+          keepIfBetter(std::move(trial), offset);
+          if (!ok || best.error <= allowed || !(area > 0))
+          {
+            break;
+          }
+          offset -= missing / area;
+        }
+        if (best.error <= allowed || snap <= smallestSnap)
+        {
+          break;
+        }
+      }
+      // Safety net: if the measure function's start led nowhere (seen with a
+      // part of two bodies bounded by two nearly parallel interfaces, where
+      // the start fell in the gap between them), bisect on the real split.
+      if (volumeCriterion && best.error > allowed)
+      {
+        double lo = measure.minimumOffset(), hi = measure.maximumOffset();
+        for (int step = 0; step < 60 && best.error > allowed; ++step)
+        {
+          const double middle = 0.5 * (lo + hi);
+          Trial trial = tryCut(n, middle, options.snapFraction);
+          if (!trial.ok)
+          {
+            break;
+          }
+          (trial.missing < 0 ? lo : hi) = middle;
+          keepIfBetter(std::move(trial), middle);
+        }
+      }
+      return best;
+    };
+    // The interfaces of the two new parts must still be triangulable (closed
+    // loops that neither cross nor touch); an aligned cut that is not falls
+    // back to the one it improves on.
+    auto interfacesValid = [&](const Trial& trial) {
+      const SurfaceComplex& t = trial.complex;
+      for (const InterfaceRegion& region : t.interfaces)
+      {
+        if (region.pair[0] != below && region.pair[0] != above && region.pair[1] != below &&
+          region.pair[1] != above)
+        {
+          continue;
+        }
+        std::map<Index, Index> local;
+        PlanarRegion planar;
+        planar.origin = t.planes[region.planeId].origin;
+        planar.normal = t.planes[region.planeId].normal;
+        for (const DirectedEdge& e : region.edges)
+        {
+          for (Index p : e)
+          {
+            if (local.emplace(p, static_cast<Index>(planar.points.size())).second)
+            {
+              planar.points.push_back(t.points[p]);
+            }
+          }
+          planar.edges.push_back({ local[e[0]], local[e[1]] });
+        }
+        InterfaceTriangulationOptions check;
+        check.refine = false;
+        if (!triangulateInterface(planar, check).ok)
+        {
+          return false;
+        }
       }
       return true;
     };
-    const double smallestSnap = std::min(options.snapFraction, 0.001);
-    for (double snap = options.snapFraction;; snap = std::max(0.5 * snap, smallestSnap))
+
+    double bestOffset = 0;
+    bool tooThin = false;
+    Trial best = balancedCut(normal, bestOffset, tooThin);
+    if (tooThin)
     {
-      for (int attempt = 0; attempt < 4; ++attempt)
+      error = "the subdomains are too many for this surface: a part cannot be cut further";
+      return false;
+    }
+    // Within half the surface's mean edge of the earlier line (and not on an
+    // edge of the part), a parallel line would leave a thin strip of poor
+    // triangles beside it: draw the very same line instead. A plane through
+    // that line rarely balances the part at first, so it turns about the
+    // line until it does (secant steps on the angle, at most the alignment
+    // angle). Accepted within half the tolerance of one subdomain, so that
+    // the errors of all levels of bisection still add up to less than the
+    // tolerance.
+    bool alongLine = false;
+    const double lineOffset = dot(normal, continued.linePoint);
+    if (volumeCriterion && continued.found && !continued.boundsPart && best.ok &&
+      std::fabs(bestOffset - lineOffset) < 0.5 * result.inputMeanEdgeLength)
+    {
+      const Vec3 sideways = cross(continued.direction, normal);
+      const double largestTurn = options.alignmentAngleDegrees * kPi / 180.0;
+      Trial aligned;
+      double angle0 = 0, missing0 = 0, angle1 = 0, missing1 = 0;
+      for (int step = 0; step < 10 && aligned.error > allowed; ++step)
       {
-        double missing = 0, area = 0;
-        if (!tryCut(offset, snap, missing, area) || bestError <= allowed || !(area > 0))
+        double angle = 0; // first the plane through the line as it is
+        if (step == 1)
+        {
+          angle = 1e-3; // then a small turn, for the secant
+        }
+        else if (step > 1)
+        {
+          if (missing1 == missing0)
+          {
+            break;
+          }
+          angle = angle1 - missing1 * (angle1 - angle0) / (missing1 - missing0);
+        }
+        if (!(std::fabs(angle) <= largestTurn))
         {
           break;
         }
-        offset -= missing / area;
-      }
-      if (bestError <= allowed || snap <= smallestSnap)
-      {
-        break;
-      }
-    }
-    // Safety net: if the measure function's start led nowhere (seen with a
-    // part of two bodies bounded by two nearly parallel interfaces, where the
-    // start fell in the gap between them), bisect on the real split volume.
-    if (volumeCriterion && bestError > allowed)
-    {
-      double lo = measure.minimumOffset(), hi = measure.maximumOffset();
-      for (int step = 0; step < 60 && bestError > allowed; ++step)
-      {
-        const double middle = 0.5 * (lo + hi);
-        double missing = 0, area = 0;
-        if (!tryCut(middle, options.snapFraction, missing, area))
+        const Vec3 n = normalized(std::cos(angle) * normal + std::sin(angle) * sideways);
+        Trial trial = tryCut(n, dot(n, continued.linePoint), options.snapFraction);
+        if (!trial.ok)
         {
           break;
         }
-        (missing < 0 ? lo : hi) = middle;
+        angle0 = angle1;
+        missing0 = missing1;
+        angle1 = angle;
+        missing1 = trial.missing;
+        if (trial.error < aligned.error)
+        {
+          aligned = std::move(trial);
+        }
+      }
+      if (aligned.ok && aligned.error <= 2.0 * allowed && interfacesValid(aligned))
+      {
+        best = std::move(aligned);
+        alongLine = true;
+        ++result.alignedLines;
       }
     }
-    if (!std::isfinite(bestError))
+    if (continued.found && !alongLine && !(best.ok && interfacesValid(best)))
+    {
+      // the parallel cut is no good either: the plane the part asked for
+      Trial proposed = balancedCut(proposedNormal, bestOffset, tooThin);
+      if (proposed.ok)
+      {
+        best = std::move(proposed);
+      }
+    }
+    if (continued.found)
+    {
+      ++result.alignedNormals;
+    }
+    if (!best.ok)
     {
       // every split failed (with a reason), or none gave a finite volume
       error = lastError.empty() ? "no cut of a part gave a finite volume" : lastError;
       return false;
     }
-    c = std::move(best);
-    result.splitStats.splitTriangles += bestStats.splitTriangles;
-    result.splitStats.snappedPoints += bestStats.snappedPoints;
-    result.splitStats.chordPoints += bestStats.chordPoints;
+    c = std::move(best.complex);
+    result.splitStats.splitTriangles += best.stats.splitTriangles;
+    result.splitStats.snappedPoints += best.stats.snappedPoints;
+    result.splitStats.chordPoints += best.stats.chordPoints;
     return true;
   };
 
@@ -306,6 +459,20 @@ DecompositionResult decomposeVolumeBalanced(
     std::sort(region.edges.begin(), region.edges.end());
   }
   c.subdomainCount = K;
+  // The contract of the complex: every interface is bounded by closed loops
+  // (splitCell checks each piece; this guards the whole result).
+  for (const InterfaceRegion& region : c.interfaces)
+  {
+    std::vector<std::vector<Index>> loops;
+    if (!chainLoops(region.edges, loops))
+    {
+      std::ostringstream msg;
+      msg << "internal: the interface between subdomains " << region.pair[0] << " and "
+          << region.pair[1] << " on plane " << region.planeId << " is not bounded by closed loops";
+      result.error = msg.str();
+      return result;
+    }
+  }
 
   result.subdomainVolume = subdomainVolumes(c);
   result.subdomainMeasure =

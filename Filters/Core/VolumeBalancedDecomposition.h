@@ -13,6 +13,7 @@
 // lower side first, for recursive bisection.
 #include "CutDirection.h"
 #include "HalfSpaceMeasure.h"
+#include "PlaneAlignment.h"
 #include "PlaneSplit.h"
 #include "SurfaceInputCheck.h"
 #include "SurfaceOrientation.h"
@@ -36,6 +37,10 @@ struct DecompositionOptions
   BalanceCriterion criterion = BalanceCriterion::Volume;
   double balanceTolerance = 0.01; // allowed relative deviation of a subdomain from its target
   double snapFraction = 0.05;     // see PlaneSplit.h; balancing may lower it to 0.001, never to 0
+  // a plane whose line on an interface is within this angle of a line
+  // already drawn there turns to run parallel to it, or along it
+  // (PlaneAlignment.h); 0 turns that off
+  double alignmentAngleDegrees = 15.0;
   InputCheckOptions inputCheck;   // see SurfaceInputCheck.h
 };
 
@@ -53,6 +58,8 @@ struct DecompositionResult
   double totalVolume = 0;               // of the oriented input surface
   double inputMeanEdgeLength = 0;       // of the merged input triangles: the default mesh size
   double maximumImbalance = 0;          // max over subdomains of |measure / target - 1|
+  int alignedNormals = 0;               // cuts turned to draw a line parallel to one they nearly continued
+  int alignedLines = 0;                 // ... and then turned about that line, drawing the same line
 };
 
 // The input triangles may be unmerged (STL); `sourceFaces` of the result
