@@ -234,9 +234,17 @@ void smoothBadTriangles(CDT& cdt, std::size_t boundaryCount, double bound, doubl
         };
         const auto now = shortfall(minimumAngle(p, u, t), minimumAngle(q, t, u));
         const auto then = shortfall(minimumAngle(p, u, q), minimumAngle(p, q, t));
-        // and, like a move, never at the price of a worse smallest angle
+        // and, like a move, never at the price of a worse smallest angle, nor
+        // making a triangle without a boundary point poor
         const bool noWorse = -then.second >= std::min(-now.second, bound);
-        if (noWorse &&
+        const Index boundary = static_cast<Index>(boundaryCount);
+        const Index ip = f->vertex(i)->info().index, iq = g->vertex(g->index(f))->info().index;
+        auto poorInside = [&](Index x, Index y, Index z, double angle) {
+          return angle < bound && x >= boundary && y >= boundary && z >= boundary;
+        };
+        const bool keepsInsideGood = !poorInside(ip, a, iq, minimumAngle(p, u, q)) &&
+          !poorInside(ip, iq, b, minimumAngle(p, q, t));
+        if (noWorse && keepsInsideGood &&
           (then.first < now.first - 1e-12 || (then.first <= now.first && then.second < now.second - 1e-12)))
         {
           cdt.flip(f, i);
@@ -590,84 +598,87 @@ InterfaceTriangulationResult triangulateInterface(
       consider(f);
     } while (++f != done);
   };
-  while (!queue.empty() && added.size() < cap)
-  {
-    const Entry top = queue.top();
-    queue.pop();
-    auto it = live.find(top.second);
-    if (it == live.end())
+  auto refine = [&]() {
+    while (!queue.empty() && added.size() < cap)
     {
-      continue;
-    }
-    Face f = it->second;
-    live.erase(it);
-    if (keyOf(f) != top.second || badness(f) != top.first)
-    {
-      continue; // stale: the face was destroyed or changed
-    }
-    const std::array<Vertex, 3> around{ f->vertex(0), f->vertex(1), f->vertex(2) };
-    // Candidates: the circumcentre, then points on the perpendicular
-    // bisector of the shortest edge between the circumcentre and the apex of
-    // the equilateral triangle on that edge (off-centres): nearer points
-    // disturb less, so they fit where the circumcentre would spoil a
-    // boundary segment's triangle.
-    const Point centre = CGAL::circumcenter(around[0]->point(), around[1]->point(), around[2]->point());
-    int k = 0; // the vertex opposite the shortest edge
-    double shortest = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < 3; ++i)
-    {
-      const double l = CGAL::squared_distance(around[CDT::ccw(i)]->point(), around[CDT::cw(i)]->point());
-      if (l < shortest)
+      const Entry top = queue.top();
+      queue.pop();
+      auto it = live.find(top.second);
+      if (it == live.end())
       {
-        shortest = l;
-        k = i;
+        continue;
+      }
+      Face f = it->second;
+      live.erase(it);
+      if (keyOf(f) != top.second || badness(f) != top.first)
+      {
+        continue; // stale: the face was destroyed or changed
+      }
+      const std::array<Vertex, 3> around{ f->vertex(0), f->vertex(1), f->vertex(2) };
+      // Candidates: the circumcentre, then points on the perpendicular
+      // bisector of the shortest edge between the circumcentre and the apex of
+      // the equilateral triangle on that edge (off-centres): nearer points
+      // disturb less, so they fit where the circumcentre would spoil a
+      // boundary segment's triangle.
+      const Point centre = CGAL::circumcenter(around[0]->point(), around[1]->point(), around[2]->point());
+      int k = 0; // the vertex opposite the shortest edge
+      double shortest = std::numeric_limits<double>::infinity();
+      for (int i = 0; i < 3; ++i)
+      {
+        const double l = CGAL::squared_distance(around[CDT::ccw(i)]->point(), around[CDT::cw(i)]->point());
+        if (l < shortest)
+        {
+          shortest = l;
+          k = i;
+        }
+      }
+      shortest = std::sqrt(shortest);
+      const Point& p = around[CDT::ccw(k)]->point();
+      const Point& q = around[CDT::cw(k)]->point();
+      const Point middle((p.x() + q.x()) / 2, (p.y() + q.y()) / 2);
+      // unit normal of pq towards the opposite vertex (the inside of f)
+      double ux = -(q.y() - p.y()) / shortest, uy = (q.x() - p.x()) / shortest;
+      const Point& apex = around[k]->point();
+      if ((apex.x() - middle.x()) * ux + (apex.y() - middle.y()) * uy < 0)
+      {
+        ux = -ux;
+        uy = -uy;
+      }
+      const double reach = (centre.x() - middle.x()) * ux + (centre.y() - middle.y()) * uy;
+      const double clearance = 0.5 * shortest;
+      std::vector<std::pair<Point, double>> candidates{ { centre, clearance } }; // and their clearance
+      const double nearest = 0.5 * std::sqrt(3.0) * shortest;
+      if (reach > nearest)
+      {
+        for (int step = 1; step <= 4; ++step)
+        {
+          const double h = reach * std::pow(nearest / reach, step / 4.0);
+          candidates.push_back({ Point(middle.x() + h * ux, middle.y() + h * uy), clearance });
+        }
+      }
+      else
+      {
+        // a flat triangle (an obtuse angle near 180 degrees, as over a boundary
+        // point where the boundary runs straight on) has its circumcentre
+        // behind the shortest edge: try the apex of the equilateral triangle on
+        // that edge, and half way to it
+        for (double h : { nearest, 0.5 * nearest })
+        {
+          candidates.push_back({ Point(middle.x() + h * ux, middle.y() + h * uy), clearance });
+        }
+      }
+      for (const auto& [candidate, distance] : candidates)
+      {
+        Face located;
+        if (acceptable(candidate, f, distance, located))
+        {
+          insertAt(candidate, located, around);
+          break;
+        }
       }
     }
-    shortest = std::sqrt(shortest);
-    const Point& p = around[CDT::ccw(k)]->point();
-    const Point& q = around[CDT::cw(k)]->point();
-    const Point middle((p.x() + q.x()) / 2, (p.y() + q.y()) / 2);
-    // unit normal of pq towards the opposite vertex (the inside of f)
-    double ux = -(q.y() - p.y()) / shortest, uy = (q.x() - p.x()) / shortest;
-    const Point& apex = around[k]->point();
-    if ((apex.x() - middle.x()) * ux + (apex.y() - middle.y()) * uy < 0)
-    {
-      ux = -ux;
-      uy = -uy;
-    }
-    const double reach = (centre.x() - middle.x()) * ux + (centre.y() - middle.y()) * uy;
-    const double clearance = 0.5 * shortest;
-    std::vector<std::pair<Point, double>> candidates{ { centre, clearance } }; // and their clearance
-    const double nearest = 0.5 * std::sqrt(3.0) * shortest;
-    if (reach > nearest)
-    {
-      for (int step = 1; step <= 4; ++step)
-      {
-        const double h = reach * std::pow(nearest / reach, step / 4.0);
-        candidates.push_back({ Point(middle.x() + h * ux, middle.y() + h * uy), clearance });
-      }
-    }
-    else
-    {
-      // a flat triangle (an obtuse angle near 180 degrees, as over a boundary
-      // point where the boundary runs straight on) has its circumcentre
-      // behind the shortest edge: try the apex of the equilateral triangle on
-      // that edge, and half way to it
-      for (double h : { nearest, 0.5 * nearest })
-      {
-        candidates.push_back({ Point(middle.x() + h * ux, middle.y() + h * uy), clearance });
-      }
-    }
-    for (const auto& [candidate, distance] : candidates)
-    {
-      Face located;
-      if (acceptable(candidate, f, distance, located))
-      {
-        insertAt(candidate, located, around);
-        break;
-      }
-    }
-  }
+  };
+  refine();
 
   // Smoothing: the refinement cannot move a vertex once placed, and a
   // boundary segment is never split, so triangles can stay thin where a
@@ -677,18 +688,6 @@ InterfaceTriangulationResult triangulateInterface(
   // raises the smaller angle of the pair. Boundary points never move.
   smoothBadTriangles(cdt, n, bound, sizeFactor);
 
-  // Output.
-  InterfaceTriangulation& t = result.triangulation;
-  t.newPoints.resize(added.size());
-  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
-  {
-    const Index i = v->info().index;
-    if (i >= static_cast<Index>(n))
-    {
-      // where smoothing left it
-      t.newPoints[i - n] = region.origin + v->point().x() * e1 + v->point().y() * e2;
-    }
-  }
   // A triangle is next to the boundary if it has a boundary point or its
   // circumcircle reaches a boundary segment: only a point inside that circle
   // could improve it, and such a point would spoil the segment's triangle.
@@ -714,6 +713,36 @@ InterfaceTriangulationResult triangulateInterface(
     }
     return false;
   };
+  // Smoothing moves points of poor triangles next to the boundary, and can
+  // carry one of them away from it, where the refinement would have split
+  // it: refine such triangles now (their circumcentres are away from the
+  // boundary too).
+  bool poorAwayFromBoundary = false;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+  {
+    if (f->info().inside && faceAngle(f) < bound && !nextToBoundary(f))
+    {
+      consider(f);
+      poorAwayFromBoundary = true;
+    }
+  }
+  if (poorAwayFromBoundary)
+  {
+    refine();
+  }
+
+  // Output.
+  InterfaceTriangulation& t = result.triangulation;
+  t.newPoints.resize(added.size());
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+  {
+    const Index i = v->info().index;
+    if (i >= static_cast<Index>(n))
+    {
+      // where smoothing left it
+      t.newPoints[i - n] = region.origin + v->point().x() * e1 + v->point().y() * e2;
+    }
+  }
   auto at3D = [&](Index i) { return i < static_cast<Index>(n) ? region.points[i] : t.newPoints[i - n]; };
   auto minimumAngle3D = [](const Vec3& a, const Vec3& b, const Vec3& c) {
     auto angle = [](const Vec3& p, const Vec3& q, const Vec3& r) {

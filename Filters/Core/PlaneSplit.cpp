@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 #include <unordered_map>
 
@@ -194,6 +195,80 @@ bool splitCell(SurfaceComplex& c, int cell, const Vec3& n, double offset, int pl
     else
     {
       info.side = info.distance < 0 ? -1 : 1;
+    }
+  }
+  // A snapped vertex inside the object (on interface boundaries only, such
+  // as the points of an earlier chord) moves onto the plane along an edge of
+  // those boundaries that the plane crosses, so it stays on their planes and
+  // now lies on this one too: left where it was, it would tilt the interface
+  // triangles at it by up to a few degrees, and a subdomain surface folded
+  // that little forces TetGen into flat tetrahedra. A vertex of the input
+  // surface stays where it is (moving it would change the surface and the
+  // enclosed volume). Moves follow the distances before any move, so the
+  // order does not matter; a vertex whose edges the plane does not cross, or
+  // only far from it, stays put.
+  {
+    std::unordered_map<Index, char> onSurface;
+    for (std::size_t i : triangles)
+    {
+      for (Index v : c.triangles[i])
+      {
+        onSurface[v] = 1;
+      }
+    }
+    std::unordered_map<Index, std::map<Index, std::set<int>>> regionNeighbours; // v -> w -> planes of edge vw
+    std::unordered_map<Index, std::set<int>> planesAt;
+    for (std::size_t r : regions)
+    {
+      const int plane = c.interfaces[r].planeId;
+      for (const auto& e : c.interfaces[r].edges)
+      {
+        for (int k = 0; k < 2; ++k)
+        {
+          const Index v = e[k], w = e[1 - k];
+          const VertexSide& info = vertices.at(v);
+          if (info.side == 0 && info.distance != 0.0 && !onSurface.count(v))
+          {
+            planesAt[v].insert(plane);
+            regionNeighbours[v][w].insert(plane);
+          }
+        }
+      }
+    }
+    std::vector<std::pair<Index, Vec3>> moves;
+    for (const auto& [v, planes] : planesAt)
+    {
+      const VertexSide& info = vertices.at(v);
+      double shortestMove = 0.25 * info.shortestEdge;
+      bool found = false;
+      Vec3 target{ 0, 0, 0 };
+      for (const auto& [w, edgePlanes] : regionNeighbours[v])
+      {
+        const VertexSide& other = vertices.at(w);
+        if (edgePlanes != planes || other.side == 0 || (other.distance < 0) == (info.distance < 0))
+        {
+          continue; // not on every interface at v, or not crossed by the plane
+        }
+        const double t = info.distance / (info.distance - other.distance);
+        const Vec3 step = t * (c.points[w] - c.points[v]);
+        const double length = norm(step);
+        if (length < shortestMove)
+        {
+          shortestMove = length;
+          target = c.points[v] + step;
+          found = true;
+        }
+      }
+      if (found)
+      {
+        moves.push_back({ v, target });
+      }
+    }
+    for (const auto& [v, target] : moves)
+    {
+      c.points[v] = target;
+      vertices.at(v).distance = 0.0;
+      ++stats.movedOntoPlane;
     }
   }
   auto sideOf = [&](Index v) { return vertices.at(v).side; };
@@ -400,11 +475,19 @@ bool splitCell(SurfaceComplex& c, int cell, const Vec3& n, double offset, int pl
         const int segments = spacing > 0
           ? static_cast<int>(std::max(1.0, std::min(std::round(length / spacing), mostSegments)))
           : 1;
+        // the chord's points lie exactly on the line where the two planes
+        // meet (its ends may lie a snapping distance off it)
+        const double regionOffset = dot(regionNormal, c.planes[region.planeId].origin);
+        const double d2 = dot(lineDirection, lineDirection);
+        const Vec3 onLineOrigin = (1.0 / d2) *
+          (regionOffset * cross(n, lineDirection) + offset * cross(lineDirection, regionNormal));
+        const double sa = dot(c.points[a] - onLineOrigin, lineDirection) / d2;
+        const double sb = dot(c.points[b] - onLineOrigin, lineDirection) / d2;
         std::vector<Index> chain{ a };
         for (int j = 1; j < segments; ++j)
         {
           const double t = static_cast<double>(j) / segments;
-          c.points.push_back(c.points[a] + t * (c.points[b] - c.points[a]));
+          c.points.push_back(onLineOrigin + (sa + t * (sb - sa)) * lineDirection);
           const Index id = static_cast<Index>(c.points.size() - 1);
           onPlane[id] = 1;
           chain.push_back(id);

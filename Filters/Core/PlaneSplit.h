@@ -8,7 +8,9 @@
 // faces (no other part is touched) by the plane normal . x = offset:
 //  * every vertex gets a side: below, above, or on the plane. A vertex within
 //    snapFraction x (its shortest incident edge) of the plane counts as on
-//    it, so the contour runs through it instead of leaving a sliver;
+//    it, so the contour runs through it instead of leaving a sliver; one
+//    inside the object (a point of earlier chords) also moves onto it along
+//    those chords, so interfaces stay flat;
 //  * an edge whose ends are strictly on opposite sides is split at one new
 //    point, computed once from the edge's ends, so every face sharing the
 //    edge shares the point;
@@ -17,8 +19,8 @@
 //    the side their normal points away from (the material side);
 //  * interface regions of earlier planes are split along the line where
 //    their plane meets this one; the chords inside a region get new points
-//    at about the local boundary spacing, shared by the region pieces and
-//    the new interface;
+//    at about the local boundary spacing, exactly on the line where the two
+//    planes meet, shared by the region pieces and the new interface;
 //  * the new interface region (pair {below, above}, normal = plane normal) is
 //    bounded by the edges left open by the faces now labeled `below`; a
 //    plane through the gap between two bodies of the part leaves none, which
@@ -41,6 +43,7 @@ struct PlaneSplitStats
 {
   std::size_t splitTriangles = 0;
   std::size_t snappedPoints = 0; // vertices off the plane treated as on it
+  std::size_t movedOntoPlane = 0; // ... of them moved onto it along one of their edges
   std::size_t chordPoints = 0;   // new points on lines where two planes meet
   std::size_t interfaceEdges = 0; // boundary edges of the new interface (0: the plane
                                   // passes between bodies of the part, no interface)
