@@ -378,6 +378,9 @@ int vtkParallelTetMesher::RequestData(
   boundary->GetPointData()->SetGlobalIds(boundaryPointIds);
   boundary->GetCellData()->AddArray(boundarySources);
   boundary->GetCellData()->AddArray(boundarySubdomains);
+  // the same totals on the small boundary port, so a summary can be fetched
+  // without gathering the volume mesh onto one process
+  boundary->GetFieldData()->ShallowCopy(fd);
   this->UpdateProgress(1.0);
   return 1;
 }
