@@ -31,6 +31,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <exception>
 #include <limits>
 #include <new>
@@ -137,32 +138,54 @@ int vtkParallelTetMesher::RequestData(
   options.minimumDihedralAngle = this->MinimumDihedralAngle;
   options.extraSwitches = this->ExtraSwitches;
 
-  // Refuse a size that cannot fit: the estimate of the largest rank's mesh
-  // against this machine's memory, the same decision on every rank.
+  // Refuse a size that cannot fit: the estimated meshes of the ranks that
+  // share a machine against that machine's memory, the same decision on
+  // every rank (all of it is gathered).
   {
-    std::vector<double> rankVolume(ptm::rankCount(controller), 0.0);
+    const int ranks = ptm::rankCount(controller);
+    std::vector<double> rankVolume(ranks, 0.0);
     for (int s = 0; s < K; ++s)
     {
-      if (piece.subdomainRank[s] >= 0 && piece.subdomainRank[s] < static_cast<int>(rankVolume.size()))
+      if (piece.subdomainRank[s] >= 0 && piece.subdomainRank[s] < ranks)
       {
         rankVolume[piece.subdomainRank[s]] += piece.subdomainVolume[s];
       }
     }
-    const auto heaviest = std::max_element(rankVolume.begin(), rankVolume.end());
-    const ptm::TetMeshEstimate estimate = ptm::estimateTetMesh(*heaviest, options.maximumVolume);
-    std::vector<long long> smallestMemory{ static_cast<long long>(ptm::physicalMemoryBytes()) };
-    ptm::allReduceMin(controller, smallestMemory);
-    const double memory = static_cast<double>(smallestMemory[0]);
-    if (memory > 0 && estimate.bytes > memory)
+    const std::vector<long long> machine =
+      ptm::allGatherValues(controller, std::vector<long long>{ ptm::machineIdentity() });
+    const std::vector<long long> memory = ptm::allGatherValues(
+      controller, std::vector<long long>{ static_cast<long long>(ptm::physicalMemoryBytes()) });
+    std::map<long long, std::vector<int>> ranksOfMachine;
+    for (int r = 0; r < static_cast<int>(machine.size()); ++r)
     {
-      std::ostringstream why;
-      why.precision(3);
-      why << "the requested size (MaximumVolume " << options.maximumVolume << ") would give about "
-          << estimate.tetrahedra << " tetrahedra on rank "
-          << (heaviest - rankVolume.begin()) << ", about " << estimate.bytes / 1e9
-          << " GB, more than this machine's " << memory / 1e9
-          << " GB of memory; use a larger size or more ranks";
-      return fail(why.str());
+      ranksOfMachine[machine[r]].push_back(r);
+    }
+    for (const auto& [id, onIt] : ranksOfMachine)
+    {
+      double tetrahedra = 0, bytes = 0, available = 0;
+      for (int r : onIt)
+      {
+        const ptm::TetMeshEstimate estimate = ptm::estimateTetMesh(rankVolume[r], options.maximumVolume);
+        tetrahedra += estimate.tetrahedra;
+        bytes += estimate.bytes;
+        const double reported = static_cast<double>(memory[r]);
+        available = available > 0 && reported > 0 ? std::min(available, reported) : reported;
+      }
+      if (available > 0 && bytes > available)
+      {
+        std::ostringstream why;
+        why.precision(3);
+        why << "the requested size (MaximumVolume " << options.maximumVolume << ") would give about "
+            << tetrahedra << " tetrahedra on the " << onIt.size() << " rank" << (onIt.size() > 1 ? "s" : "")
+            << " of one machine (rank";
+        for (std::size_t k = 0; k < onIt.size() && k < 8; ++k)
+        {
+          why << (k ? ", " : " ") << onIt[k];
+        }
+        why << (onIt.size() > 8 ? ", ..." : "") << "), about " << bytes / 1e9 << " GB, more than its "
+            << available / 1e9 << " GB of memory; use a larger size or more machines";
+        return fail(why.str());
+      }
     }
   }
   std::vector<ptm::SubdomainSurface> surfaces(mine.size());

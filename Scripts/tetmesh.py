@@ -129,13 +129,14 @@ def main(argv):
     below = simple.Threshold(Input=quality, Scalars=["CELLS", "Quality"], LowerThreshold=-1.0, UpperThreshold=10.0)
     below.UpdatePipeline()
     tets = info.GetNumberOfCells()
-    # the totals, from the boundary port: fetching port 0 would gather the
-    # whole volume mesh onto rank 0 (with 4 x 10^7 tetrahedra that gather
-    # passes MPI's 2 GB message limit and never ends)
-    fd = servermanager.Fetch(mesher, idx=1).GetFieldData()
+    # the totals (the same on every rank), from rank 0's piece of the small
+    # boundary port: fetching port 0 would gather the whole volume mesh onto
+    # rank 0 (with 4 x 10^7 tetrahedra that gather passes MPI's 2 GB message
+    # limit and never ends)
+    fd = servermanager.Fetch(mesher, 0, idx=1).GetFieldData()
     per_subdomain = [int(fd.GetArray("SubdomainTetrahedra").GetValue(i))
                      for i in range(fd.GetArray("SubdomainTetrahedra").GetNumberOfTuples())]
-    complex_fd = servermanager.Fetch(cutter).GetFieldData()
+    complex_fd = servermanager.Fetch(cutter, 0).GetFieldData()
     owner = [int(complex_fd.GetArray("SubdomainRank").GetValue(i))
              for i in range(complex_fd.GetArray("SubdomainRank").GetNumberOfTuples())]
     per_rank = [0] * ranks

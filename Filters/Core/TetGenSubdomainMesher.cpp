@@ -716,9 +716,21 @@ TetMeshEstimate estimateTetMesh(double volume, double maximumVolume)
   if (volume > 0 && maximumVolume > 0)
   {
     e.tetrahedra = 2.0 * volume / maximumVolume;
-    e.bytes = 700.0 * e.tetrahedra;
+    e.bytes = 220.0 * e.tetrahedra;
   }
   return e;
+}
+
+long long machineIdentity()
+{
+  char name[256] = {};
+  ::gethostname(name, sizeof(name) - 1);
+  std::uint64_t hash = 1469598103934665603ull; // FNV-1a
+  for (const char* c = name; *c; ++c)
+  {
+    hash = (hash ^ static_cast<unsigned char>(*c)) * 1099511628211ull;
+  }
+  return static_cast<long long>(hash >> 1);
 }
 
 double physicalMemoryBytes()

@@ -54,8 +54,9 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& surface, const TetMesh
 // in memory instead of being killed half-way. With a volume bound TetGen's
 // quality mesh has about 2 x volume / maximumVolume tetrahedra (measured:
 // ball 2.0, bracket 2.3); a rank running the pipeline in pvbatch peaks at
-// about 700 bytes per tetrahedron (TetGen's working set plus the VTK output:
-// 912 MB for 1.26 M tetrahedra on the benchmark ball).
+// about 190 bytes per tetrahedron (TetGen's child process plus the VTK
+// output: 3.9 GB per rank for 41.6 M tetrahedra on 2 ranks), so the
+// estimate counts 220.
 struct TetMeshEstimate
 {
   double tetrahedra = 0;
@@ -65,6 +66,10 @@ TetMeshEstimate estimateTetMesh(double volume, double maximumVolume);
 
 // Physical memory of this machine in bytes (0 if unknown).
 double physicalMemoryBytes();
+
+// A number that is the same for the processes of one machine and (almost
+// surely) different between machines: a hash of the host name.
+long long machineIdentity();
 
 // What TetGen 1.5's exit codes mean.
 std::string describeTetGenError(int code);
