@@ -126,19 +126,7 @@ int vtkInterfaceTriangulator::RequestData(
       return piece.globalIds[a] < piece.globalIds[b];
     });
     points.erase(std::unique(points.begin(), points.end()), points.end());
-    std::map<ptm::Index, ptm::Index> localOf;
-    ptm::PlanarRegion planar;
-    planar.origin = c.planes[region.planeId].origin;
-    planar.normal = c.planes[region.planeId].normal;
-    for (ptm::Index p : points)
-    {
-      localOf[p] = static_cast<ptm::Index>(planar.points.size());
-      planar.points.push_back(c.points[p]);
-    }
-    for (const auto& e : region.edges)
-    {
-      planar.edges.push_back({ localOf[e[0]], localOf[e[1]] });
-    }
+    ptm::PlanarRegion planar = ptm::planarRegionOf(c, region, points);
     std::sort(planar.edges.begin(), planar.edges.end());
     try
     {

@@ -786,4 +786,23 @@ InterfaceTriangulationResult triangulateInterface(
   result.ok = true;
   return result;
 }
+
+PlanarRegion planarRegionOf(
+  const SurfaceComplex& complex, const InterfaceRegion& region, const std::vector<Index>& points)
+{
+  PlanarRegion planar;
+  planar.origin = complex.planes[region.planeId].origin;
+  planar.normal = complex.planes[region.planeId].normal;
+  std::map<Index, Index> localOf;
+  for (Index p : points)
+  {
+    localOf[p] = static_cast<Index>(planar.points.size());
+    planar.points.push_back(complex.points[p]);
+  }
+  for (const DirectedEdge& e : region.edges)
+  {
+    planar.edges.push_back({ localOf.at(e[0]), localOf.at(e[1]) });
+  }
+  return planar;
+}
 } // namespace ptm

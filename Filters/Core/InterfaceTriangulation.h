@@ -22,7 +22,7 @@
 // Triangles under the bound are left only next to the boundary: with a
 // boundary point, or with a circumcircle that reaches a boundary segment.
 // The same input always gives bit-identical output.
-#include "TriangleSurface.h"
+#include "SurfaceComplex.h"
 
 #include <string>
 
@@ -64,5 +64,11 @@ struct InterfaceTriangulationResult
 
 InterfaceTriangulationResult triangulateInterface(
   const PlanarRegion& region, const InterfaceTriangulationOptions& options);
+
+// One interface of a complex as a planar region: its plane, the complex
+// points `points` (every point of the region's edges once, in the order the
+// caller wants them numbered) and the region's edges in those local numbers.
+PlanarRegion planarRegionOf(
+  const SurfaceComplex& complex, const InterfaceRegion& region, const std::vector<Index>& points);
 } // namespace ptm
 #endif

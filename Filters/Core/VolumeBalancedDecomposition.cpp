@@ -278,24 +278,16 @@ DecompositionResult decomposeVolumeBalanced(
         {
           continue;
         }
-        std::map<Index, Index> local;
-        PlanarRegion planar;
-        planar.origin = t.planes[region.planeId].origin;
-        planar.normal = t.planes[region.planeId].normal;
+        std::vector<Index> points;
         for (const DirectedEdge& e : region.edges)
         {
-          for (Index p : e)
-          {
-            if (local.emplace(p, static_cast<Index>(planar.points.size())).second)
-            {
-              planar.points.push_back(t.points[p]);
-            }
-          }
-          planar.edges.push_back({ local[e[0]], local[e[1]] });
+          points.insert(points.end(), e.begin(), e.end());
         }
+        std::sort(points.begin(), points.end());
+        points.erase(std::unique(points.begin(), points.end()), points.end());
         InterfaceTriangulationOptions check;
         check.refine = false;
-        if (!triangulateInterface(planar, check).ok)
+        if (!triangulateInterface(planarRegionOf(t, region, points), check).ok)
         {
           return false;
         }

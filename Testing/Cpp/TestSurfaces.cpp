@@ -219,19 +219,7 @@ InterfaceFigures triangulateAllInterfaces(SurfaceComplex& c)
     }
     std::sort(points.begin(), points.end());
     points.erase(std::unique(points.begin(), points.end()), points.end());
-    std::map<Index, Index> local;
-    PlanarRegion planar;
-    planar.origin = c.planes[region.planeId].origin;
-    planar.normal = c.planes[region.planeId].normal;
-    for (Index p : points)
-    {
-      local[p] = static_cast<Index>(planar.points.size());
-      planar.points.push_back(c.points[p]);
-    }
-    for (const auto& e : region.edges)
-    {
-      planar.edges.push_back({ local[e[0]], local[e[1]] });
-    }
+    const PlanarRegion planar = planarRegionOf(c, region, points);
     const InterfaceTriangulationResult r = triangulateInterface(planar, {});
     if (!r.ok)
     {
