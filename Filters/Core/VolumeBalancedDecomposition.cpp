@@ -313,8 +313,30 @@ DecompositionResult decomposeVolumeBalanced(
     // tolerance.
     bool alongLine = false;
     const double lineOffset = dot(normal, continued.linePoint);
-    if (volumeCriterion && continued.found && !continued.boundsPart && best.ok &&
-      std::fabs(bestOffset - lineOffset) < 0.5 * result.inputMeanEdgeLength)
+    const bool nearLine = volumeCriterion && continued.found && !continued.boundsPart && best.ok &&
+      std::fabs(bestOffset - lineOffset) < 0.5 * result.inputMeanEdgeLength;
+    // First the earlier plane itself, when it is also within the alignment
+    // angle of the proposed one: where several parts are cut by nearly one
+    // plane (the four quarters of a ball, say), turning each through one
+    // earlier line still leaves its other lines a hair apart; the same plane
+    // leaves none.
+    if (nearLine)
+    {
+      const CuttingPlane& earlier = c.planes[continued.planeId];
+      const double cosine = dot(earlier.normal, proposedNormal);
+      if (std::fabs(cosine) >= std::cos(options.alignmentAngleDegrees * kPi / 180.0))
+      {
+        const Vec3 n = cosine < 0 ? -1.0 * earlier.normal : earlier.normal;
+        Trial same = tryCut(n, dot(n, earlier.origin), options.snapFraction);
+        if (same.ok && same.error <= 2.0 * allowed && interfacesValid(same))
+        {
+          best = std::move(same);
+          alongLine = true;
+          ++result.alignedLines;
+        }
+      }
+    }
+    if (nearLine && !alongLine)
     {
       const Vec3 sideways = cross(continued.direction, normal);
       const double largestTurn = options.alignmentAngleDegrees * kPi / 180.0;
