@@ -36,8 +36,6 @@ using Point = K::Point_2;
 using Face = CDT::Face_handle;
 using Vertex = CDT::Vertex_handle;
 
-constexpr double kPi = 3.14159265358979323846;
-
 double minimumAngle(const Point& a, const Point& b, const Point& c)
 {
   auto angle = [](const Point& p, const Point& q, const Point& r) {

@@ -9,7 +9,6 @@ namespace ptm
 NearlyContinuedLine findNearlyContinuedLine(
   const SurfaceComplex& c, int cell, const Vec3& proposedNormal, double maximumAngleDegrees)
 {
-  constexpr double kPi = 3.14159265358979323846;
   NearlyContinuedLine best;
   double bestSine = std::sin(maximumAngleDegrees * kPi / 180.0);
   std::set<int> ownPlanes;
@@ -78,10 +77,7 @@ NearlyContinuedLine findNearlyContinuedLine(
       best.boundsPart = ownPlanes.count(planeId) > 0;
       best.angleDegrees = std::asin(std::min(1.0, sine)) * 180.0 / kPi;
       best.direction = direction;
-      // the point of both planes nearest the origin
-      const double faceOffset = dot(face.normal, face.origin);
-      best.linePoint = (1.0 / (lineLength * lineLength)) *
-        (faceOffset * cross(plane.normal, line) + offset * cross(line, face.normal));
+      best.linePoint = pointOnBothPlanes(face.normal, dot(face.normal, face.origin), plane.normal, offset);
       best.parallelNormal = normalized(proposedNormal - dot(proposedNormal, direction) * direction);
     }
   }

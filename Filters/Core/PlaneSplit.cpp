@@ -477,10 +477,9 @@ bool splitCell(SurfaceComplex& c, int cell, const Vec3& n, double offset, int pl
           : 1;
         // the chord's points lie exactly on the line where the two planes
         // meet (its ends may lie a snapping distance off it)
-        const double regionOffset = dot(regionNormal, c.planes[region.planeId].origin);
+        const Vec3 onLineOrigin =
+          pointOnBothPlanes(regionNormal, dot(regionNormal, c.planes[region.planeId].origin), n, offset);
         const double d2 = dot(lineDirection, lineDirection);
-        const Vec3 onLineOrigin = (1.0 / d2) *
-          (regionOffset * cross(n, lineDirection) + offset * cross(lineDirection, regionNormal));
         const double sa = dot(c.points[a] - onLineOrigin, lineDirection) / d2;
         const double sb = dot(c.points[b] - onLineOrigin, lineDirection) / d2;
         std::vector<Index> chain{ a };

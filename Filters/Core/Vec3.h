@@ -8,6 +8,8 @@ namespace ptm
 {
 using Vec3 = std::array<double, 3>;
 
+constexpr double kPi = 3.14159265358979323846;
+
 inline Vec3 operator+(const Vec3& a, const Vec3& b) { return { a[0] + b[0], a[1] + b[1], a[2] + b[2] }; }
 inline Vec3 operator-(const Vec3& a, const Vec3& b) { return { a[0] - b[0], a[1] - b[1], a[2] - b[2] }; }
 inline Vec3 operator*(double s, const Vec3& a) { return { s * a[0], s * a[1], s * a[2] }; }
@@ -34,6 +36,14 @@ inline void planeBasis(const Vec3& n, Vec3& e1, Vec3& e2)
   a[axis] = 1;
   e1 = normalized(cross(n, a));
   e2 = cross(n, e1);
+}
+
+// The point nearest the origin of the line where the planes n1 . x = d1 and
+// n2 . x = d2 meet (the line runs along cross(n1, n2), which must not be 0).
+inline Vec3 pointOnBothPlanes(const Vec3& n1, double d1, const Vec3& n2, double d2)
+{
+  const Vec3 line = cross(n1, n2);
+  return (1.0 / dot(line, line)) * (d1 * cross(n2, line) + d2 * cross(line, n1));
 }
 } // namespace ptm
 #endif

@@ -42,8 +42,6 @@ const char* toString(BalanceCriterion c)
 
 namespace
 {
-constexpr double kPi = 3.14159265358979323846;
-
 // Measure of each final subdomain by the criterion.
 std::vector<double> measureSubdomains(const SurfaceComplex& c, BalanceCriterion criterion,
   const std::vector<double>& volumes)

@@ -154,7 +154,7 @@ TEST(OffFormat, ConvexPentagonBecomesThreeTriangles)
   text.precision(17);
   for (int k = 0; k < 5; ++k)
   {
-    const double a = 2 * test::kPi * k / 5;
+    const double a = 2 * kPi * k / 5;
     const Vec3 p = (1.0 / 3.0) * Vec3{ 1, 1, 1 } + std::cos(a) * e1 + std::sin(a) * e2;
     text << p[0] << " " << p[1] << " " << p[2] << "\n";
   }
@@ -165,7 +165,7 @@ TEST(OffFormat, ConvexPentagonBecomesThreeTriangles)
   bool positive = false;
   const double area = areaAlong(r.data.surface, 0, 3, n, positive);
   EXPECT_TRUE(positive);
-  EXPECT_NEAR(area, 2.5 * std::sin(2 * test::kPi / 5), 1e-13);
+  EXPECT_NEAR(area, 2.5 * std::sin(2 * kPi / 5), 1e-13);
   EXPECT_EQ(r.data.sourcePolygon, (std::vector<Index>{ 0, 0, 0 }));
 }
 

@@ -11,8 +11,6 @@
 
 namespace ptm::test
 {
-constexpr double kPi = 3.14159265358979323846;
-
 // Axis-aligned box [lo, hi] with every face split into n x n squares of two triangles.
 TriangleSurface subdividedBox(const Vec3& lo, const Vec3& hi, int n);
 // Sphere from a subdivided icosahedron (20 * 4^level triangles), vertices on the sphere.
