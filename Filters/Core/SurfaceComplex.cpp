@@ -110,6 +110,18 @@ double labelVolume(const SurfaceComplex& c, int label)
   return v;
 }
 
+std::vector<Index> regionPoints(const InterfaceRegion& region)
+{
+  std::vector<Index> points;
+  for (const DirectedEdge& e : region.edges)
+  {
+    points.insert(points.end(), e.begin(), e.end());
+  }
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  return points;
+}
+
 std::vector<Triangle> subdomainTriangles(const SurfaceComplex& c, int s)
 {
   std::vector<Triangle> out;

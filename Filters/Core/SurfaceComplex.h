@@ -70,6 +70,9 @@ std::vector<double> subdomainVolumes(const SurfaceComplex& complex);
 // part during decomposition), by the same rule as subdomainVolumes.
 double labelVolume(const SurfaceComplex& complex, int label);
 
+// The points of a region's boundary, each once, in increasing index order.
+std::vector<Index> regionPoints(const InterfaceRegion& region);
+
 // Vector area (1/2 sum p x q) of a set of directed boundary edges.
 Vec3 vectorArea(const std::vector<Vec3>& points, const std::vector<DirectedEdge>& edges);
 

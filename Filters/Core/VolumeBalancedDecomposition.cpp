@@ -276,16 +276,9 @@ DecompositionResult decomposeVolumeBalanced(
         {
           continue;
         }
-        std::vector<Index> points;
-        for (const DirectedEdge& e : region.edges)
-        {
-          points.insert(points.end(), e.begin(), e.end());
-        }
-        std::sort(points.begin(), points.end());
-        points.erase(std::unique(points.begin(), points.end()), points.end());
         InterfaceTriangulationOptions check;
         check.refine = false;
-        if (!triangulateInterface(planarRegionOf(t, region, points), check).ok)
+        if (!triangulateInterface(planarRegionOf(t, region, regionPoints(region)), check).ok)
         {
           return false;
         }

@@ -212,13 +212,7 @@ InterfaceFigures triangulateAllInterfaces(SurfaceComplex& c)
   }
   for (const InterfaceRegion& region : c.interfaces)
   {
-    std::vector<Index> points;
-    for (const auto& e : region.edges)
-    {
-      points.push_back(e[0]);
-    }
-    std::sort(points.begin(), points.end());
-    points.erase(std::unique(points.begin(), points.end()), points.end());
+    const std::vector<Index> points = regionPoints(region);
     const PlanarRegion planar = planarRegionOf(c, region, points);
     const InterfaceTriangulationResult r = triangulateInterface(planar, {});
     if (!r.ok)
