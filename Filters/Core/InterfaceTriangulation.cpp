@@ -742,13 +742,6 @@ InterfaceTriangulationResult triangulateInterface(
     }
   }
   auto at3D = [&](Index i) { return i < static_cast<Index>(n) ? region.points[i] : t.newPoints[i - n]; };
-  auto minimumAngle3D = [](const Vec3& a, const Vec3& b, const Vec3& c) {
-    auto angle = [](const Vec3& p, const Vec3& q, const Vec3& r) {
-      const Vec3 u = q - p, v = r - p;
-      return std::atan2(norm(cross(u, v)), dot(u, v)) * 180.0 / kPi;
-    };
-    return std::min({ angle(a, b, c), angle(b, c, a), angle(c, a, b) });
-  };
   t.minimumAngleDegrees = 180;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
   {
@@ -759,7 +752,9 @@ InterfaceTriangulationResult triangulateInterface(
     t.triangles.push_back({ f->vertex(0)->info().index, f->vertex(1)->info().index, f->vertex(2)->info().index });
     // measured on the output in 3D: boundary points may lie off the plane
     // (snapped onto it by the cutter), so their projection can differ
-    const double angle = minimumAngle3D(at3D(t.triangles.back()[0]), at3D(t.triangles.back()[1]), at3D(t.triangles.back()[2]));
+    const Triangle& added3D = t.triangles.back();
+    const double angle =
+      triangleMinimumAngle(at3D(added3D[0]), at3D(added3D[1]), at3D(added3D[2])) * 180.0 / kPi;
     t.minimumAngleDegrees = std::min(t.minimumAngleDegrees, angle);
     if (angle < options.minimumAngleDegrees)
     {

@@ -10,18 +10,9 @@ namespace ptm
 {
 namespace
 {
-constexpr double kDegree = 3.14159265358979323846 / 180.0;
+constexpr double kDegree = kPi / 180.0;
 // a node whose worst incident angle is below this gets the directed search
 constexpr double kPoorAngleDegrees = 20.0;
-
-double minimumAngle(const Vec3& a, const Vec3& b, const Vec3& c)
-{
-  auto angle = [](const Vec3& p, const Vec3& q, const Vec3& r) {
-    const Vec3 u = q - p, v = r - p;
-    return std::atan2(norm(cross(u, v)), dot(u, v));
-  };
-  return std::min({ angle(a, b, c), angle(b, c, a), angle(c, a, b) });
-}
 
 Vec3 closestPointOnSegment(const Vec3& p, const Vec3& a, const Vec3& b)
 {
@@ -70,7 +61,7 @@ TriangleQualityFigures triangleQuality(const SurfaceComplex& c)
   std::size_t below10 = 0, below20 = 0;
   for (const auto& t : c.triangles)
   {
-    const double a = minimumAngle(c.points[t[0]], c.points[t[1]], c.points[t[2]]) / kDegree;
+    const double a = triangleMinimumAngle(c.points[t[0]], c.points[t[1]], c.points[t[2]]) / kDegree;
     q.minimumAngleDegrees = std::min(q.minimumAngleDegrees, a);
     below10 += a < 10 ? 1 : 0;
     below20 += a < 20 ? 1 : 0;
@@ -310,7 +301,7 @@ RelaxationResult relaxSurfaceComplex(SurfaceComplex& c, const RelaxationOptions&
     for (std::size_t t : trianglesOf[v])
     {
       const auto& tri = c.triangles[t];
-      worst = std::min(worst, minimumAngle(c.points[tri[0]], c.points[tri[1]], c.points[tri[2]]));
+      worst = std::min(worst, triangleMinimumAngle(c.points[tri[0]], c.points[tri[1]], c.points[tri[2]]));
     }
     return worst;
   };

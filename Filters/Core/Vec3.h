@@ -1,6 +1,7 @@
 #ifndef PTM_VEC3_H
 #define PTM_VEC3_H
 // Small fixed-size 3D vector arithmetic shared by the geometry core.
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -36,6 +37,16 @@ inline void planeBasis(const Vec3& n, Vec3& e1, Vec3& e2)
   a[axis] = 1;
   e1 = normalized(cross(n, a));
   e2 = cross(n, e1);
+}
+
+// The smallest interior angle of the triangle abc, in radians.
+inline double triangleMinimumAngle(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  auto angle = [](const Vec3& p, const Vec3& q, const Vec3& r) {
+    const Vec3 u = q - p, v = r - p;
+    return std::atan2(norm(cross(u, v)), dot(u, v));
+  };
+  return std::min({ angle(a, b, c), angle(b, c, a), angle(c, a, b) });
 }
 
 // The point nearest the origin of the line where the planes n1 . x = d1 and
