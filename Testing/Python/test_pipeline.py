@@ -77,8 +77,9 @@ def check_case(base, K):
     fd = complex_data.GetFieldData()
     counted = int(vtk_to_numpy(fd.GetArray("InterfaceTrianglesBelowMinimumAngle"))[0])
     counted_away = int(vtk_to_numpy(fd.GetArray("InterfaceTrianglesBelowMinimumAngleAwayFromBoundary"))[0])
-    # the triangulator measures angles in the plane, here they are measured
-    # in 3D: a triangle within 1e-9 degrees of the bound may fall either way
+    # the triangulator measures the output's angles in C++, this check with
+    # numpy (the same formula, rounded differently): a triangle within 1e-9
+    # degrees of the bound may fall either way
     below, away = interface_exceptions(table, tris, pairs, planes, 20.7 - 1e-9)
     below_or_at, _ = interface_exceptions(table, tris, pairs, planes, 20.7 + 1e-9)
     assert below <= counted <= below_or_at, \
