@@ -6,7 +6,9 @@
 #include "RankCollectives.h"
 #include "SubdomainSurface.h"
 #include "SurfaceComplexArrays.h"
+#include "SurfaceRefinement.h"
 #include "TetGenSubdomainMesher.h"
+#include "TetrahedronQuality.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -37,6 +39,71 @@
 #include <new>
 #include <sstream>
 #include <unordered_map>
+
+namespace
+{
+// Why the requested size cannot fit, or nothing: the estimated meshes of the
+// ranks that share a machine against that machine's memory, the same
+// decision on every rank (all of it is gathered).
+std::string memoryShortfall(
+  vtkMultiProcessController* controller, const ptm::ComplexPiece& piece, double maximumVolume)
+{
+  const int K = piece.complex.subdomainCount;
+  const int ranks = ptm::rankCount(controller);
+  std::vector<double> rankVolume(ranks, 0.0);
+  for (int s = 0; s < K; ++s)
+  {
+    if (piece.subdomainRank[s] >= 0 && piece.subdomainRank[s] < ranks)
+    {
+      rankVolume[piece.subdomainRank[s]] += piece.subdomainVolume[s];
+    }
+  }
+  const std::vector<long long> machine =
+    ptm::allGatherValues(controller, std::vector<long long>{ ptm::machineIdentity() });
+  const std::vector<long long> memory = ptm::allGatherValues(
+    controller, std::vector<long long>{ static_cast<long long>(ptm::physicalMemoryBytes()) });
+  std::map<long long, std::vector<int>> ranksOfMachine;
+  for (int r = 0; r < static_cast<int>(machine.size()); ++r)
+  {
+    ranksOfMachine[machine[r]].push_back(r);
+  }
+  for (const auto& [id, onIt] : ranksOfMachine)
+  {
+    double tetrahedra = 0, bytes = 0, available = 0;
+    for (int r : onIt)
+    {
+      const ptm::TetMeshEstimate estimate = ptm::estimateTetMesh(rankVolume[r], maximumVolume);
+      tetrahedra += estimate.tetrahedra;
+      bytes += estimate.bytes;
+      const double reported = static_cast<double>(memory[r]);
+      available = available > 0 && reported > 0 ? std::min(available, reported) : reported;
+    }
+    if (available > 0 && bytes > available)
+    {
+      std::ostringstream why;
+      why.precision(3);
+      why << "the requested size (MaximumVolume " << maximumVolume << ") would give about "
+          << tetrahedra << " tetrahedra on the " << onIt.size() << " rank" << (onIt.size() > 1 ? "s" : "")
+          << " of one machine (rank";
+      for (std::size_t k = 0; k < onIt.size() && k < 8; ++k)
+      {
+        why << (k ? ", " : " ") << onIt[k];
+      }
+      why << (onIt.size() > 8 ? ", ..." : "") << "), about " << bytes / 1e9 << " GB, more than its "
+          << available / 1e9 << " GB of memory; use a larger size or more machines";
+      return why.str();
+    }
+  }
+  return {};
+}
+
+// The edge of the regular tetrahedron of volume v: the target size of the
+// boundary refinement, so that surface and volume are sized alike.
+double regularTetrahedronEdge(double v)
+{
+  return std::cbrt(6.0 * std::sqrt(2.0) * v);
+}
+} // namespace
 
 vtkStandardNewMacro(vtkParallelTetMesher);
 vtkCxxSetObjectMacro(vtkParallelTetMesher, Controller, vtkMultiProcessController);
@@ -100,6 +167,10 @@ int vtkParallelTetMesher::RequestData(
     "MaximumVolume", "be 0 (automatic) or a positive volume", this->MaximumVolume);
   checks.Require(this->MinimumDihedralAngle >= 0.0 && this->MinimumDihedralAngle <= 30.0,
     "MinimumDihedralAngle", "lie in [0, 30] degrees", this->MinimumDihedralAngle);
+  checks.Require(this->CoplanarTolerance >= 0.0 && this->CoplanarTolerance <= 10.0,
+    "CoplanarTolerance", "lie in [0, 10] degrees", this->CoplanarTolerance);
+  checks.Require(this->BoundaryMinimumAngle > 0.0 && this->BoundaryMinimumAngle <= 34.0,
+    "BoundaryMinimumAngle", "lie in (0, 34] degrees", this->BoundaryMinimumAngle);
   if (!checks.Ok())
   {
     vtkErrorMacro(<< checks.Message());
@@ -138,59 +209,17 @@ int vtkParallelTetMesher::RequestData(
   options.minimumDihedralAngle = this->MinimumDihedralAngle;
   options.extraSwitches = this->ExtraSwitches;
 
-  // Refuse a size that cannot fit: the estimated meshes of the ranks that
-  // share a machine against that machine's memory, the same decision on
-  // every rank (all of it is gathered).
+  // Refuse a size that cannot fit, the same decision on every rank.
+  const std::string tooLarge = memoryShortfall(controller, piece, options.maximumVolume);
+  if (!tooLarge.empty())
   {
-    const int ranks = ptm::rankCount(controller);
-    std::vector<double> rankVolume(ranks, 0.0);
-    for (int s = 0; s < K; ++s)
-    {
-      if (piece.subdomainRank[s] >= 0 && piece.subdomainRank[s] < ranks)
-      {
-        rankVolume[piece.subdomainRank[s]] += piece.subdomainVolume[s];
-      }
-    }
-    const std::vector<long long> machine =
-      ptm::allGatherValues(controller, std::vector<long long>{ ptm::machineIdentity() });
-    const std::vector<long long> memory = ptm::allGatherValues(
-      controller, std::vector<long long>{ static_cast<long long>(ptm::physicalMemoryBytes()) });
-    std::map<long long, std::vector<int>> ranksOfMachine;
-    for (int r = 0; r < static_cast<int>(machine.size()); ++r)
-    {
-      ranksOfMachine[machine[r]].push_back(r);
-    }
-    for (const auto& [id, onIt] : ranksOfMachine)
-    {
-      double tetrahedra = 0, bytes = 0, available = 0;
-      for (int r : onIt)
-      {
-        const ptm::TetMeshEstimate estimate = ptm::estimateTetMesh(rankVolume[r], options.maximumVolume);
-        tetrahedra += estimate.tetrahedra;
-        bytes += estimate.bytes;
-        const double reported = static_cast<double>(memory[r]);
-        available = available > 0 && reported > 0 ? std::min(available, reported) : reported;
-      }
-      if (available > 0 && bytes > available)
-      {
-        std::ostringstream why;
-        why.precision(3);
-        why << "the requested size (MaximumVolume " << options.maximumVolume << ") would give about "
-            << tetrahedra << " tetrahedra on the " << onIt.size() << " rank" << (onIt.size() > 1 ? "s" : "")
-            << " of one machine (rank";
-        for (std::size_t k = 0; k < onIt.size() && k < 8; ++k)
-        {
-          why << (k ? ", " : " ") << onIt[k];
-        }
-        why << (onIt.size() > 8 ? ", ..." : "") << "), about " << bytes / 1e9 << " GB, more than its "
-            << available / 1e9 << " GB of memory; use a larger size or more machines";
-        return fail(why.str());
-      }
-    }
+    return fail(tooLarge);
   }
   std::vector<ptm::SubdomainSurface> surfaces(mine.size());
   std::vector<ptm::TetMesh> meshes(mine.size());
   std::vector<double> seconds(mine.size(), 0.0);
+  std::vector<long long> added(mine.size(), 0); // points the boundary refinement put on the surface
+  std::vector<double> volumeChange(mine.size(), 0.0), deviation(mine.size(), 0.0); // and how it moved it
   for (std::size_t k = 0; k < mine.size() && localError.empty(); ++k)
   {
     const int s = mine[k];
@@ -204,6 +233,26 @@ int vtkParallelTetMesher::RequestData(
     const auto start = std::chrono::steady_clock::now();
     try
     {
+      if (this->BoundaryRefinement && options.maximumVolume > 0)
+      {
+        ptm::SurfaceRefinementOptions refinement;
+        refinement.size = regularTetrahedronEdge(options.maximumVolume);
+        refinement.minimumAngleDegrees = this->BoundaryMinimumAngle;
+        refinement.coplanarToleranceDegrees = this->CoplanarTolerance;
+        const ptm::SurfaceRefinementResult refined = ptm::refineSubdomainSurface(surfaces[k], refinement);
+        if (!refined.ok)
+        {
+          localError = where.str() + "boundary refinement: " + refined.error;
+          break;
+        }
+        for (const std::string& w : refined.warnings)
+        {
+          vtkWarningMacro(<< where.str() << w);
+        }
+        added[k] = static_cast<long long>(refined.pointsAdded);
+        volumeChange[k] = refined.volumeChange;
+        deviation[k] = refined.largestDeviation;
+      }
       ptm::TetMeshingResult r = ptm::meshClosedSurface(surfaces[k].surface, options);
       if (!r.ok)
       {
@@ -248,15 +297,51 @@ int vtkParallelTetMesher::RequestData(
   for (std::size_t k = 0; k < mine.size(); ++k)
   {
     counts.push_back(mine[k]);
-    counts.push_back(static_cast<long long>(meshes[k].points.size() - surfaces[k].surface.points.size()));
+    // every point beyond the complex's own (the refinement's, TetGen's) is
+    // private to the subdomain and numbered with it
+    counts.push_back(static_cast<long long>(meshes[k].points.size() - surfaces[k].globalIds.size()));
     counts.push_back(static_cast<long long>(meshes[k].tets.size()));
+    counts.push_back(added[k]);
   }
   const std::vector<long long> allCounts = ptm::allGatherValues(controller, counts);
+  std::vector<double> changes;
+  ptm::DihedralQuality quality; // this rank's, then every rank's
+  for (std::size_t k = 0; k < mine.size(); ++k)
+  {
+    changes.insert(changes.end(), { static_cast<double>(mine[k]), volumeChange[k], deviation[k] });
+    const ptm::DihedralQuality q = ptm::dihedralQuality(meshes[k]);
+    quality.below10Degrees += q.below10Degrees;
+    quality.minimumDihedralDegrees = std::min(quality.minimumDihedralDegrees, q.minimumDihedralDegrees);
+  }
+  {
+    std::vector<double> below{ static_cast<double>(quality.below10Degrees) }; // exact below 2^53
+    ptm::allReduceSum(controller, below);
+    std::vector<long long> minimum{ -std::llround(quality.minimumDihedralDegrees * 1e9) };
+    ptm::allReduceMax(controller, minimum);
+    quality.below10Degrees = std::llround(below[0]);
+    quality.minimumDihedralDegrees = -static_cast<double>(minimum[0]) * 1e-9;
+  }
+  const std::vector<double> allChanges = ptm::allGatherValues(controller, changes);
+  std::vector<double> subdomainChange(K, 0.0);
+  double largestDeviation = 0;
+  for (std::size_t k = 0; k + 2 < allChanges.size(); k += 3)
+  {
+    subdomainChange[static_cast<int>(allChanges[k])] = allChanges[k + 1];
+    largestDeviation = std::max(largestDeviation, allChanges[k + 2]);
+  }
+  double totalChange = 0, totalVolume = 0; // summed in subdomain order: the same on any number of ranks
+  for (int s = 0; s < K; ++s)
+  {
+    totalChange += subdomainChange[s];
+    totalVolume += piece.subdomainVolume[s];
+  }
   std::vector<long long> interior(K, 0), tets(K, 0);
-  for (std::size_t k = 0; k + 2 < allCounts.size(); k += 3)
+  long long boundaryPointsAdded = 0;
+  for (std::size_t k = 0; k + 3 < allCounts.size(); k += 4)
   {
     interior[allCounts[k]] = allCounts[k + 1];
     tets[allCounts[k]] = allCounts[k + 2];
+    boundaryPointsAdded += allCounts[k + 3];
   }
   const ptm::GlobalMeshOffsets offsets =
     ptm::globalMeshOffsets(piece.globalPointCount, interior, tets);
@@ -316,14 +401,16 @@ int vtkParallelTetMesher::RequestData(
     const int s = mine[k];
     const ptm::SubdomainSurface& surface = surfaces[k];
     const ptm::TetMesh& mesh = meshes[k];
-    const std::size_t nSurface = surface.surface.points.size();
+    const std::size_t nShared = surface.globalIds.size(); // the complex's points, maybe shared
+    auto globalIdOf = [&](std::size_t i) {
+      return i < nShared ? static_cast<long long>(surface.globalIds[i])
+                         : offsets.firstInteriorPoint[s] + static_cast<long long>(i - nShared);
+    };
     std::vector<vtkIdType> local(mesh.points.size());
     for (std::size_t i = 0; i < mesh.points.size(); ++i)
     {
-      const bool onSurface = i < nSurface;
-      const long long gid = onSurface ? surface.globalIds[i]
-                                      : offsets.firstInteriorPoint[s] + static_cast<long long>(i - nSurface);
-      const int owner = onSurface ? ptm::owningRank(static_cast<int>(lowest[gid]), piece.subdomainRank) : rank;
+      const long long gid = globalIdOf(i);
+      const int owner = i < nShared ? ptm::owningRank(static_cast<int>(lowest[gid]), piece.subdomainRank) : rank;
       local[i] = addPoint(gid, mesh.points[i], owner);
     }
     for (std::size_t t = 0; t < mesh.tets.size(); ++t)
@@ -345,7 +432,7 @@ int vtkParallelTetMesher::RequestData(
       for (int c = 0; c < 3; ++c)
       {
         const ptm::Index p = surface.surface.triangles[t][c];
-        const long long gid = surface.globalIds[p];
+        const long long gid = globalIdOf(static_cast<std::size_t>(p));
         auto it = boundaryLocalOf.find(gid);
         if (it == boundaryLocalOf.end())
         {
@@ -378,6 +465,17 @@ int vtkParallelTetMesher::RequestData(
   addCount(fd, ptm::arrays::NumberOfSubdomains, K);
   addCount(fd, "GlobalPointCount", offsets.pointCount);
   addCount(fd, "GlobalCellCount", offsets.tetrahedronCount);
+  addCount(fd, "BoundaryPointsAdded", boundaryPointsAdded);
+  auto addValue = [&](const char* name, double value) {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(name);
+    a->InsertNextValue(value);
+    fd->AddArray(a);
+  };
+  addValue("BoundaryVolumeChange", totalVolume != 0 ? totalChange / totalVolume : 0.0);
+  addValue("BoundaryLargestDeviation", largestDeviation);
+  addCount(fd, "TetrahedraBelow10Degrees", quality.below10Degrees);
+  addValue("MinimumDihedralAngle", quality.minimumDihedralDegrees);
   vtkNew<vtkIdTypeArray> perSubdomain;
   perSubdomain->SetName("SubdomainTetrahedra");
   for (long long t : tets)
@@ -385,6 +483,13 @@ int vtkParallelTetMesher::RequestData(
     perSubdomain->InsertNextValue(t);
   }
   fd->AddArray(perSubdomain);
+  vtkNew<vtkIntArray> subdomainRank;
+  subdomainRank->SetName("SubdomainRank");
+  for (int s = 0; s < K; ++s)
+  {
+    subdomainRank->InsertNextValue(piece.subdomainRank[s]);
+  }
+  fd->AddArray(subdomainRank);
   vtkNew<vtkDoubleArray> times;
   times->SetName("RankMeshingSeconds");
   double total = 0;
@@ -415,4 +520,7 @@ void vtkParallelTetMesher::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumVolume: " << this->MaximumVolume << "\n";
   os << indent << "MinimumDihedralAngle: " << this->MinimumDihedralAngle << "\n";
   os << indent << "ExtraSwitches: " << this->ExtraSwitches << "\n";
+  os << indent << "BoundaryRefinement: " << this->BoundaryRefinement << "\n";
+  os << indent << "BoundaryMinimumAngle: " << this->BoundaryMinimumAngle << "\n";
+  os << indent << "CoplanarTolerance: " << this->CoplanarTolerance << "\n";
 }

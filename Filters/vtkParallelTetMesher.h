@@ -4,9 +4,11 @@
  *
  * Stage 4 of the parallel tetrahedral mesher. Each rank extracts the closed
  * surface of every subdomain it owns (canonical form, see
- * ptm::extractSubdomainSurface) and meshes it with TetGen (libtet) with the
- * surface preserved exactly (-pY: no Steiner point on any subdomain surface),
- * so neighbouring pieces match node for node across interfaces. Ranks mesh
+ * ptm::extractSubdomainSurface), refines its outer part on the input surface
+ * (ptm::refineSubdomainSurface; interfaces and contours unchanged) and meshes
+ * it with TetGen (libtet) with that surface preserved (-pY: TetGen adds no
+ * Steiner point on any subdomain surface), so neighbouring pieces match node
+ * for node across interfaces. Ranks mesh
  * independently; only the counts are exchanged afterwards for the global
  * numbering, which follows subdomain order and so does not depend on the
  * number of ranks.
@@ -17,7 +19,11 @@
  *    whole mesh); vtkGhostType with DUPLICATEPOINT on copies of points owned
  *    by another rank (owner: the rank of the lowest subdomain touching it);
  *  - cell data: GlobalCellIds (the global ids, 0..T-1), SubdomainId, Rank;
- *  - field data: NumberOfSubdomains, GlobalPointCount, GlobalCellCount.
+ *  - field data: NumberOfSubdomains, GlobalPointCount, GlobalCellCount,
+ *    BoundaryPointsAdded (points the boundary refinement put on the input
+ *    surface; they are numbered with their subdomain's interior points),
+ *    BoundaryVolumeChange (relative) and BoundaryLargestDeviation (0 up to
+ *    round-off unless CoplanarTolerance is set).
  * Output port 1, vtkPolyData: the outer boundary triangles of the rank's
  * subdomains with GlobalPointIds, SourceFaceId (the input triangle) and
  * SubdomainId, for boundary conditions.
@@ -63,6 +69,32 @@ public:
   ///@}
 
   ///@{
+  /// Boundary refinement before TetGen (default on; see
+  /// ptm::refineSubdomainSurface): the outer part of every subdomain surface
+  /// is meshed anew on the input surface, with edges near the target size
+  /// (the edge of a regular tetrahedron of MaximumVolume) and triangles of at
+  /// least BoundaryMinimumAngle, the interfaces and contours unchanged, so
+  /// tetrahedra next to the boundary are not held to the input's slivers.
+  vtkSetMacro(BoundaryRefinement, bool);
+  vtkGetMacro(BoundaryRefinement, bool);
+  vtkBooleanMacro(BoundaryRefinement, bool);
+  vtkSetMacro(BoundaryMinimumAngle, double);
+  vtkGetMacro(BoundaryMinimumAngle, double);
+  ///@}
+
+  ///@{
+  /// Degrees; 0 (default) keeps the geometry exactly: only exactly coplanar
+  /// input triangles are meshed anew together. Above 0, input triangles
+  /// whose normals differ by less than this join one facet, as TetGen -p
+  /// merges nearly coplanar facets: far better triangles on CAD files whose
+  /// flat faces are flat only to the file's 6-7 digits, at the price of a
+  /// small change of the surface, reported as the field data
+  /// BoundaryVolumeChange (relative) and BoundaryLargestDeviation.
+  vtkSetMacro(CoplanarTolerance, double);
+  vtkGetMacro(CoplanarTolerance, double);
+  ///@}
+
+  ///@{
   /// Extra TetGen switches for experts (validated: nothing that breaks the surface contract).
   vtkSetMacro(ExtraSwitches, std::string);
   vtkGetMacro(ExtraSwitches, std::string);
@@ -84,6 +116,9 @@ protected:
   double MaximumVolume = 0.0;
   double MinimumDihedralAngle = 0.0;
   std::string ExtraSwitches;
+  bool BoundaryRefinement = true;
+  double BoundaryMinimumAngle = 20.7;
+  double CoplanarTolerance = 0.0;
   vtkMultiProcessController* Controller = nullptr;
 
 private:

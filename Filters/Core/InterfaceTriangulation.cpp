@@ -345,7 +345,7 @@ InterfaceTriangulationResult triangulateInterface(
   {
     for (std::size_t i = 0; i < n; ++i)
     {
-      if (segmentCount[i] == 0)
+      if (segmentCount[i] == 0 && !options.keepIsolatedPoints)
       {
         continue; // a point no segment uses does not belong to the region
       }
@@ -360,7 +360,8 @@ InterfaceTriangulationResult triangulateInterface(
       }
       v->info().index = static_cast<Index>(i);
       v->info().size = options.maximumEdgeLength > 0 ? options.maximumEdgeLength
-                                                     : spacing[i] / segmentCount[i];
+        : segmentCount[i] > 0                         ? spacing[i] / segmentCount[i]
+                                                      : std::numeric_limits<double>::infinity();
       vertices[i] = v;
     }
     for (const auto& e : region.edges)
@@ -463,7 +464,7 @@ InterfaceTriangulationResult triangulateInterface(
   }
   for (std::size_t i = 0; i < n; ++i)
   {
-    if (segmentCount[i])
+    if (segmentCount[i] || (options.keepIsolatedPoints && options.maximumEdgeLength > 0))
     {
       smallestSize = std::min(smallestSize, vertices[i]->info().size);
     }

@@ -1,0 +1,70 @@
+#ifndef PTM_SURFACE_REFINEMENT_H
+#define PTM_SURFACE_REFINEMENT_H
+// Stage 4a of the method: conforming refinement of one subdomain surface
+// before TetGen, so that the tetrahedra next to the boundary are as good as
+// serial TetGen's with boundary refinement (-pq), while TetGen itself runs
+// with the surface preserved (-Y) and neighbours still match node for node.
+//
+// Contract.
+//  Input: a closed, outward subdomain surface (SubdomainSurface). Its
+//  triangles are outer (otherSide < 0: pieces of input triangles, which no
+//  other subdomain has) or interface triangles (shared with the neighbour
+//  across, triangulated by stage 2).
+//  Output: the same surface as a point set, re-triangulated on its outer part:
+//   * facets: maximal edge-connected sets of outer triangles that are exactly
+//     coplanar (CGAL's exact orientation predicate) and face the same way
+//     (or, only when asked, nearly coplanar: coplanarToleranceDegrees);
+//   * segments: edges between two facets (every edge of the input that is not
+//     flat), split into round(length / size) equal parts;
+//   * every facet with more than one triangle or a split segment is meshed
+//     anew inside its boundary by the interface mesher (CGAL constrained
+//     Delaunay, refinement inside only, every input vertex kept).
+//  Unchanged: the interface triangles, every edge next to one (the contours:
+//  the neighbour has the same ones) and every point of the input, in the same
+//  order. New points are appended after them, in a deterministic order, and
+//  lie on the input surface: on a segment, or in a facet's plane inside it.
+//  So the enclosed volume does not change beyond round-off.
+//  On a facet the mesher refuses (degenerate input), the surface is returned
+//  unrefined with a warning: still conforming, only not improved.
+#include "SubdomainSurface.h"
+
+#include <string>
+#include <vector>
+
+namespace ptm
+{
+struct SurfaceRefinementOptions
+{
+  double size = 0.0;                 // target edge length, > 0
+  double minimumAngleDegrees = 20.7; // quality bound of the facet meshes, (0, 34]
+  // 0 (default): a facet is exactly planar, and the surface keeps its
+  // geometry. > 0: outer triangles whose normals lie within this angle of a
+  // facet's first triangle join it, as TetGen -p merges nearly coplanar
+  // facets (files keep 6-7 digits, so a flat CAD face is rarely flat to the
+  // last bit): new points are put on the input triangles under them, but the
+  // new triangles may leave the input surface by up to largestDeviation.
+  double coplanarToleranceDegrees = 0.0;
+};
+
+struct SurfaceRefinementResult
+{
+  bool ok = false;
+  std::string error;
+  std::vector<std::string> warnings;
+  std::size_t facets = 0;          // planar facets of the outer part
+  std::size_t facetsMeshed = 0;    // of them meshed anew
+  std::size_t segmentsSplit = 0;
+  std::size_t pointsAdded = 0;
+  double minimumAngleBefore = 0.0; // degrees, outer triangles
+  double minimumAngleAfter = 0.0;
+  double volumeChange = 0.0;     // of the enclosed volume (round-off only without a tolerance)
+  double largestDeviation = 0.0; // of a new triangle's centroid from the input surface (0 without a tolerance)
+};
+
+// Refines `surface` in place: points appended, triangles (with sourceFaces
+// and otherSide) replaced; globalIds keeps the input points' ids only, so
+// points at index >= globalIds.size() are new.
+SurfaceRefinementResult refineSubdomainSurface(
+  SubdomainSurface& surface, const SurfaceRefinementOptions& options);
+} // namespace ptm
+#endif

@@ -1,0 +1,53 @@
+#include "TetrahedronQuality.h"
+
+namespace ptm
+{
+double smallestDihedralDegrees(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
+{
+  const std::array<Vec3, 4> p{ a, b, c, d };
+  // outward unit normal of the face opposite each vertex
+  std::array<Vec3, 4> normal;
+  for (int f = 0; f < 4; ++f)
+  {
+    const Vec3& x = p[(f + 1) % 4];
+    const Vec3& y = p[(f + 2) % 4];
+    const Vec3& z = p[(f + 3) % 4];
+    Vec3 n = cross(y - x, z - x);
+    if (dot(n, p[f] - x) > 0)
+    {
+      n = -1.0 * n;
+    }
+    const double length = norm(n);
+    if (!(length > 0))
+    {
+      return 0.0;
+    }
+    normal[f] = (1.0 / length) * n;
+  }
+  // the dihedral angle at the edge shared by faces f and g is pi minus the
+  // angle between their outward normals
+  double smallest = kPi;
+  for (int f = 0; f < 4; ++f)
+  {
+    for (int g = f + 1; g < 4; ++g)
+    {
+      smallest = std::min(smallest, kPi - std::acos(std::clamp(dot(normal[f], normal[g]), -1.0, 1.0)));
+    }
+  }
+  return smallest * 180.0 / kPi;
+}
+
+DihedralQuality dihedralQuality(const TetMesh& mesh)
+{
+  DihedralQuality q;
+  for (const auto& t : mesh.tets)
+  {
+    const double angle =
+      smallestDihedralDegrees(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], mesh.points[t[3]]);
+    ++q.tetrahedra;
+    q.below10Degrees += angle < 10.0 ? 1 : 0;
+    q.minimumDihedralDegrees = std::min(q.minimumDihedralDegrees, angle);
+  }
+  return q;
+}
+} // namespace ptm
