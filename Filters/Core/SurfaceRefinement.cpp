@@ -162,24 +162,43 @@ std::vector<int> facetLabels(
 using SegmentPoints = std::map<UndirectedEdge, std::vector<Index>>;
 
 // The spacing a segment is split at: the target size, or less where a
-// corner of one of its two facets lies closer to the segment than that (a
-// thin facet: the corner across a long edge), so the triangles across a thin
-// facet can be well shaped, as TetGen -q splits encroached segments. Never
-// below size / 32, so a tiny input feature cannot make millions of points.
+// corner of one of its two facets lies closer to the segment than that and
+// the facet is poor (a triangle under the angle bound: a thin facet, whose
+// corner across a long edge is near), so the triangles across a thin facet
+// can be well shaped, as TetGen -q splits encroached segments. Corners of
+// good facets do not count: splitting the slightly long edge of a good
+// triangle only makes worse ones (measured on a gmsh fillet: 0.33 % of the
+// tetrahedra under 10 degrees instead of 0.14 %). Never below size / 32, so
+// a tiny input feature cannot make millions of points.
 class SegmentSpacing
 {
 public:
   SegmentSpacing(const std::vector<Vec3>& points, const std::vector<Triangle>& triangles,
-    const std::vector<int>& label, double size)
+    const std::vector<int>& label, double size, double boundRadians)
     : Points(points)
     , Size(size)
     , FacetsOf(points.size())
   {
+    int facets = 0;
+    for (int l : label)
+    {
+      facets = std::max(facets, l + 1);
+    }
+    std::vector<char> poor(facets, 0);
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+    {
+      const Triangle& tri = triangles[t];
+      if (label[t] >= 0 && triangleMinimumAngle(points[tri[0]], points[tri[1]], points[tri[2]]) < boundRadians)
+      {
+        poor[label[t]] = 1;
+      }
+    }
     for (std::size_t t = 0; t < triangles.size(); ++t)
     {
       for (Index p : triangles[t])
       {
-        if (label[t] >= 0 && std::find(FacetsOf[p].begin(), FacetsOf[p].end(), label[t]) == FacetsOf[p].end())
+        if (label[t] >= 0 && poor[label[t]] &&
+          std::find(FacetsOf[p].begin(), FacetsOf[p].end(), label[t]) == FacetsOf[p].end())
         {
           if (FacetsOf[p].empty())
           {
@@ -244,7 +263,7 @@ private:
 
   const std::vector<Vec3>& Points;
   double Size;
-  std::vector<std::vector<int>> FacetsOf; // the facets each outer point is a corner of
+  std::vector<std::vector<int>> FacetsOf; // the poor facets each outer point is a corner of
   std::unordered_map<std::uint64_t, std::vector<Index>> Cells;
 };
 
@@ -254,13 +273,13 @@ private:
 // so the same surface always numbers them alike. Edges next to an interface
 // are contours, which the neighbouring subdomain has too: never split here.
 SegmentPoints splitSegments(SubdomainSurface& s, const std::vector<std::array<Index, 3>>& across,
-  const std::vector<int>& label, double size)
+  const std::vector<int>& label, double size, double boundRadians)
 {
   SegmentPoints split;
   auto& pts = s.surface.points;
   const auto& tris = s.surface.triangles;
   const std::vector<Vec3> corners = pts; // the spacing looks at the input's corners only
-  const SegmentSpacing spacing(corners, tris, label, size);
+  const SegmentSpacing spacing(corners, tris, label, size, boundRadians);
   for (std::size_t t = 0; t < tris.size(); ++t)
   {
     for (int k = 0; k < 3 && label[t] >= 0; ++k)
@@ -609,7 +628,8 @@ SurfaceRefinementResult refineSubdomainSurface(
   const double volumeBefore = outerVolume(surface);
 
   SubdomainSurface refined = surface; // the work copy: the input stays intact for a fallback
-  const SegmentPoints split = splitSegments(refined, across, label, options.size);
+  const SegmentPoints split =
+    splitSegments(refined, across, label, options.size, options.minimumAngleDegrees * kPi / 180.0);
   const std::vector<Facet> facets = collectFacets(surface, across, label, split);
   result.facets = facets.size();
   result.segmentsSplit = split.size();

@@ -8,7 +8,7 @@ import sys
 
 import numpy as np
 import ptm_testing as t
-from mesh_checks import (check_complex, check_volume_mesh, enclosed_volume,
+from mesh_checks import (cells_of, check_complex, check_volume_mesh, enclosed_volume, global_points, unify,
                          interface_exceptions, subdomain_surfaces_closed)
 from paraview import simple
 from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -96,16 +96,21 @@ def check_case(base, K):
     surface = rtris[rpairs[:, 1] == -1]
     assert abs(rvolumes.sum() / enclosed_volume(rtable, surface) - 1) < 1e-9
 
-    mesh = read_all(vtkXMLPUnstructuredGridReader, base + "_mesh.pvtu")
-    figures = check_volume_mesh(mesh, surface)
-    # the boundary port: outer triangles with their input triangle
+    # the boundary port: the outer triangles of the mesh, refined on the
+    # relaxed surface, each with its input triangle
     boundary = read_all(vtkXMLPPolyDataReader, base + "_boundary.pvtp")
-    assert boundary.GetNumberOfCells() == len(surface), (boundary.GetNumberOfCells(), len(surface))
-    assert vtk_to_numpy(boundary.GetCellData().GetArray("SourceFaceId")).min() >= 0
+    boundary_gids, boundary_coords = global_points(boundary)
+    boundary_tris = boundary_gids[cells_of(boundary, 3)]
+    sources = vtk_to_numpy(boundary.GetCellData().GetArray("SourceFaceId")).astype(np.int64)
+    assert sources.min() >= 0
+    btable = np.full((boundary_gids.max() + 1, 3), np.nan)  # the boundary's ids are not contiguous
+    btable[boundary_gids] = boundary_coords
+    check_on_surface(rtable, surface, relaxed, btable, boundary_tris, sources)
+    mesh = read_all(vtkXMLPUnstructuredGridReader, base + "_mesh.pvtu")
+    figures = check_volume_mesh(mesh, boundary_tris)
 
     # canonical digest for the rank-independence comparison
     gids = vtk_to_numpy(mesh.GetPointData().GetGlobalIds()).astype(np.int64)
-    from mesh_checks import cells_of, unify
     coords = unify(gids, vtk_to_numpy(mesh.GetPoints().GetData()).astype(np.float64))
     tets = gids[cells_of(mesh, 4)]
     order = np.argsort(vtk_to_numpy(mesh.GetCellData().GetGlobalIds()))
@@ -113,6 +118,30 @@ def check_case(base, K):
              relaxed_points=rtable, mesh_points=coords, mesh_tets=tets[order])
     figures.update({"balance": balance, "interface_below_min_angle": counted})
     return figures
+
+
+def check_on_surface(table, surface, complex_data, btable, btris, bsources):
+    """The boundary refinement keeps the relaxed surface as a point set: the
+    mesh's boundary encloses the same volume, and every corner of a boundary
+    triangle lies in the plane of the input triangle it names (of a piece of
+    that triangle in the complex)."""
+    v0, v1 = enclosed_volume(table, surface), enclosed_volume(btable, btris)
+    assert abs(v1 / v0 - 1) < 1e-12, "the boundary refinement changed the volume: %r -> %r" % (v0, v1)
+    gids, _ = global_points(complex_data)
+    tris = gids[cells_of(complex_data, 3)]
+    sources = vtk_to_numpy(complex_data.GetCellData().GetArray("SourceFaceId")).astype(np.int64)
+    piece_of = {}
+    for tri, src in zip(tris[sources >= 0], sources[sources >= 0]):
+        piece_of.setdefault(int(src), tri)
+    diagonal = np.linalg.norm(table.max(axis=0) - table.min(axis=0))
+    piece = np.array([piece_of[int(src)] for src in bsources])
+    a, b, c = table[piece[:, 0]], table[piece[:, 1]], table[piece[:, 2]]
+    n = np.cross(b - a, c - a)
+    n /= np.linalg.norm(n, axis=1)[:, None]
+    for k in range(3):
+        off = np.abs(np.einsum("ij,ij->i", btable[btris[:, k]] - a, n))
+        assert off.max() < 1e-12 * diagonal, \
+            "a boundary point lies %g off the plane of its input triangle" % off.max()
 
 
 t.run_checks(main)
