@@ -72,6 +72,11 @@ int vtkSurfaceRelaxer::RequestData(
   this->UpdateProgress(0.0);
   // nonsense property values (the same on every rank, so every rank stops)
   ptm::PropertyChecks checks("SurfaceRelaxer");
+  checks.Require(this->Mode == KEEP_SURFACE || this->Mode == SMOOTH_SURFACE, "Mode",
+    "be 0 (KeepSurface) or 1 (SmoothSurface)", this->Mode);
+  checks.Require(this->MaximumSurfaceDeviation >= 0.0 && this->MaximumSurfaceDeviation <= 1.0,
+    "MaximumSurfaceDeviation", "lie in [0, 1] (relative to the bounding-box diagonal)",
+    this->MaximumSurfaceDeviation);
   checks.Require(this->NumberOfIterations >= 0 && this->NumberOfIterations <= 1000,
     "NumberOfIterations", "lie in [0, 1000]", this->NumberOfIterations);
   checks.Require(this->RelaxationFactor >= 0.01 && this->RelaxationFactor <= 1.0,
@@ -110,9 +115,11 @@ int vtkSurfaceRelaxer::RequestData(
     return 1;
   }
   this->UpdateProgress(0.2);
-  this->SetProgressText("Relaxing");
+  this->SetProgressText(this->Mode == KEEP_SURFACE ? "Relaxing (keeping the surface)" : "Relaxing (smoothing the surface)");
 
   ptm::RelaxationOptions options;
+  options.mode = this->Mode == SMOOTH_SURFACE ? ptm::RelaxationMode::SmoothSurface : ptm::RelaxationMode::KeepSurface;
+  options.maximumSurfaceDeviation = this->MaximumSurfaceDeviation;
   options.iterations = this->NumberOfIterations;
   options.relaxationFactor = this->RelaxationFactor;
   options.featureAngleDegrees = this->FeatureAngle;
@@ -165,6 +172,15 @@ int vtkSurfaceRelaxer::RequestData(
   addValue("ShareBelow20DegreesBefore", result.before.shareBelow20Degrees);
   addValue("ShareBelow20DegreesAfter", result.after.shareBelow20Degrees);
   addValue("MovedNodeCount", static_cast<double>(result.acceptedMoves));
+  // what the relaxation did to the geometry (~1e-15 in KeepSurface mode)
+  addValue("RelaxationMode", static_cast<double>(this->Mode));
+  addValue("VolumeChange", result.change.volumeChange);
+  addValue("MaximumSubdomainVolumeChange", result.change.maximumSubdomainVolumeChange);
+  addValue("SurfaceDeviationOutputToInput", result.change.deviationOutputToInput);
+  addValue("SurfaceDeviationInputToOutput", result.change.deviationInputToOutput);
+  addValue("FreeNodeCount", static_cast<double>(result.freeNodes));
+  addValue("SlidingNodeCount", static_cast<double>(result.slidingNodes));
+  addValue("FixedNodeCount", static_cast<double>(result.fixedNodes));
   if (input)
   {
     for (const char* name : { "InterfaceNewPoints", "InterfaceTrianglesBelowMinimumAngle",
@@ -185,6 +201,8 @@ int vtkSurfaceRelaxer::RequestData(
 void vtkSurfaceRelaxer::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "Mode: " << (this->Mode == KEEP_SURFACE ? "KeepSurface" : "SmoothSurface") << "\n";
+  os << indent << "MaximumSurfaceDeviation: " << this->MaximumSurfaceDeviation << "\n";
   os << indent << "NumberOfIterations: " << this->NumberOfIterations << "\n";
   os << indent << "RelaxationFactor: " << this->RelaxationFactor << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";

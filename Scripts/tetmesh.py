@@ -33,6 +33,10 @@ def parse_arguments(argv):
     p.add_argument("--direction", default="Inertia", choices=["Inertia", "LongestExtent", "X", "Y", "Z"])
     p.add_argument("--radius-edge-ratio", type=float, default=2.0, help="TetGen quality bound (default 2.0)")
     p.add_argument("--relax-iterations", type=int, default=10, help="surface relaxation sweeps (default 10)")
+    p.add_argument("--relax-mode", default="KeepSurface", choices=["KeepSurface", "SmoothSurface"],
+                   help="KeepSurface (default): the surface stays exactly the same; SmoothSurface: may move it")
+    p.add_argument("--max-surface-deviation", type=float, default=0.01,
+                   help="SmoothSurface: largest surface move, relative to the bounding-box diagonal (default 0.01)")
     p.add_argument("--plugin", default=None, help="path of ParallelTetMesher.so (default: from the build tree)")
     p.add_argument("--json", default=None, help="also write the summary as JSON")
     return p.parse_args(argv)
@@ -109,7 +113,9 @@ def main(argv):
     cutter = run("cut", simple.VolumeBalancedCutter(
         Input=reader, NumberOfSubdomains=args.subdomains, Strategy=args.strategy, Direction=args.direction))
     interfaces = run("interface", simple.InterfaceTriangulator(Input=cutter, MaximumEdgeLength=args.size))
-    relaxed = run("relax", simple.SurfaceRelaxer(Input=interfaces, NumberOfIterations=args.relax_iterations))
+    relaxed = run("relax", simple.SurfaceRelaxer(Input=interfaces, NumberOfIterations=args.relax_iterations,
+                                                 Mode=args.relax_mode,
+                                                 MaximumSurfaceDeviation=args.max_surface_deviation))
     volume = args.size ** 3 / (6 * math.sqrt(2)) if args.size > 0 else 0.0
     mesher = run("volume meshing", simple.ParallelTetMesher(
         Input=relaxed, RadiusEdgeRatio=args.radius_edge_ratio, MaximumVolume=volume))
