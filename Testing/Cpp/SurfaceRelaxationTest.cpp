@@ -347,7 +347,7 @@ TEST_P(KeepSurfaceRelaxation, KeepsEverySubdomainExactly)
   const auto [K, strategy] = GetParam();
   const std::vector<NamedSurface> surfaces = bundledSurfaces();
   ASSERT_GE(surfaces.size(), 10u) << "Data/*.stl, Data/*.off";
-  double thinBefore = 0, thinAfter = 0;
+  double thinBefore = 0, thinAfter = 0, smoothThinAfter = 0;
   for (const NamedSurface& k : surfaces)
   {
     std::ostringstream label;
@@ -423,7 +423,26 @@ TEST_P(KeepSurfaceRelaxation, KeepsEverySubdomainExactly)
     SurfaceComplex again = before;
     relaxSurfaceComplex(again, RelaxationOptions{});
     EXPECT_EQ(again.points, after.points) << label.str();
+
+    // the explicit mode on the same case, for comparison: what moving the
+    // surface buys and costs (bounded by its deviation)
+    SurfaceComplex smoothed = before;
+    const RelaxationResult m = relaxSurfaceComplex(smoothed, smoothOptions());
+    ASSERT_TRUE(m.ok) << label.str() << ": " << m.error;
+    EXPECT_LE(m.change.deviationOutputToInput, smoothOptions().maximumSurfaceDeviation) << label.str();
+    EXPECT_LE(m.change.deviationInputToOutput, smoothOptions().maximumSurfaceDeviation) << label.str();
+    EXPECT_GE(m.after.minimumAngleDegrees, m.before.minimumAngleDegrees) << label.str();
+    smoothThinAfter += m.after.shareBelow10Degrees * m.after.triangles;
+    std::cout << "[ figure ] SmoothSurface " << label.str() << ": under 10 degrees "
+              << 100 * m.before.shareBelow10Degrees << "% -> " << 100 * m.after.shareBelow10Degrees
+              << "%, smallest angle " << m.before.minimumAngleDegrees << " -> " << m.after.minimumAngleDegrees
+              << " degrees; volume change " << m.change.volumeChange << " (subdomains up to "
+              << m.change.maximumSubdomainVolumeChange << "), deviation " << m.change.deviationOutputToInput
+              << " / " << m.change.deviationInputToOutput << "\n";
   }
+  std::cout << "[ figure ] SmoothSurface all bundled surfaces K=" << K << " " << toString(strategy) << ": "
+            << std::lround(thinBefore) << " triangles under 10 degrees -> " << std::lround(smoothThinAfter) << " ("
+            << (thinBefore > 0 ? 100 * (1 - smoothThinAfter / thinBefore) : 100) << "% fewer)\n";
   std::cout << "[ figure ] KeepSurface all bundled surfaces K=" << K << " " << toString(strategy) << ": "
             << std::lround(thinBefore) << " triangles under 10 degrees -> " << std::lround(thinAfter) << " ("
             << (thinBefore > 0 ? 100 * (1 - thinAfter / thinBefore) : 100) << "% fewer)\n";
