@@ -174,6 +174,10 @@ private:
   std::size_t movesBeyondDeviation = 0;
   // KeepSurface
   std::vector<ExactFrame> frames;
+  // how far an interface point may lie from its cutting plane and still
+  // count as on it: 1e-13 of the bounding-box diagonal, 1000 times the
+  // rounding of a coordinate, and 10 times under the 1e-12 the tests allow
+  double planeTolerance = 0;
 
   int patchOf(std::size_t t) const { return c.trianglePlanes.empty() ? -1 : c.trianglePlanes[t]; }
   void buildAdjacency();
@@ -295,17 +299,32 @@ void Relaxer::classifyByFeatures()
   }
 }
 
-// KeepSurface: cases (a), (b), (c) of the header, decided exactly on the
-// original coordinates.
+// KeepSurface: cases (a), (b), (c) of the header. The planes of a node's
+// star: surface triangles grouped by exact coplanarity (CGAL's exact
+// orientation on the original coordinates); interface triangles by their
+// cutting plane, whose points lie on it by the complex's contract but only
+// up to rounding (a point computed on an inclined plane is almost never
+// exactly coplanar with three others: with the exact test alone no interface
+// node of recursive bisection on the ball moved at all). Those must lie
+// within planeTolerance of it, else the node is fixed.
 NodeKind Relaxer::exactKind(Index v, ExactFrame& frame) const
 {
   auto P = [&](Index i) { return toCgal(original[i]); };
-  // the star's triangles grouped by exact plane (a reference triangle each)
-  std::vector<Triangle> planes;
-  std::vector<int> group;
-  auto onPlane = [&](const Triangle& ref, Index w) {
-    return CGAL::orientation(P(ref[0]), P(ref[1]), P(ref[2]), P(w)) == CGAL::COPLANAR;
+  struct StarPlane
+  {
+    int cut = -1;     // the cutting plane of interface triangles, -1 on the surface
+    Triangle ref{};   // surface: a triangle exactly in the plane
   };
+  auto onPlane = [&](const StarPlane& plane, Index w) {
+    if (plane.cut >= 0)
+    {
+      const CuttingPlane& cut = c.planes[plane.cut];
+      return std::fabs(dot(cut.normal, original[w] - cut.origin)) <= planeTolerance;
+    }
+    return CGAL::orientation(P(plane.ref[0]), P(plane.ref[1]), P(plane.ref[2]), P(w)) == CGAL::COPLANAR;
+  };
+  std::vector<StarPlane> planes;
+  std::vector<int> group;
   for (std::size_t t : trianglesOf[v])
   {
     const Triangle& tri = c.triangles[t];
@@ -313,13 +332,18 @@ NodeKind Relaxer::exactKind(Index v, ExactFrame& frame) const
     {
       return NodeKind::Fixed; // a degenerate triangle spans no plane
     }
+    const StarPlane own{ patchOf(t), tri };
+    if (own.cut >= 0 && !(onPlane(own, tri[0]) && onPlane(own, tri[1]) && onPlane(own, tri[2])))
+    {
+      return NodeKind::Fixed; // an interface point snapped off its plane
+    }
     int g = -1;
     for (std::size_t k = 0; k < planes.size() && g < 0; ++k)
     {
-      if (onPlane(planes[k], tri[0]) && onPlane(planes[k], tri[1]) && onPlane(planes[k], tri[2]))
-      {
-        g = static_cast<int>(k);
-      }
+      const bool same = own.cut >= 0 ? planes[k].cut == own.cut
+                                     : planes[k].cut < 0 && onPlane(planes[k], tri[0]) &&
+          onPlane(planes[k], tri[1]) && onPlane(planes[k], tri[2]);
+      g = same ? static_cast<int>(k) : g;
     }
     if (g < 0)
     {
@@ -327,7 +351,7 @@ NodeKind Relaxer::exactKind(Index v, ExactFrame& frame) const
       {
         return NodeKind::Fixed; // three or more planes: a corner or a curved surface
       }
-      planes.push_back(tri);
+      planes.push_back(own);
       g = static_cast<int>(planes.size()) - 1;
     }
     group.push_back(g);
@@ -359,22 +383,43 @@ NodeKind Relaxer::exactKind(Index v, ExactFrame& frame) const
   }
   if (planes.size() == 1)
   {
-    // (a): origin + s u + t w with u, w edges of a triangle exactly in the plane
-    const Triangle& ref = planes[0];
+    // (a): origin + s u + t w with u, w edges of a triangle exactly in the
+    // plane, or the cutting plane's basis
     frame.origin = original[v];
-    frame.u = original[ref[1]] - original[ref[0]];
-    frame.w = original[ref[2]] - original[ref[0]];
+    if (planes[0].cut >= 0)
+    {
+      planeBasis(c.planes[planes[0].cut].normal, frame.u, frame.w);
+    }
+    else
+    {
+      const Triangle& ref = planes[0].ref;
+      frame.u = original[ref[1]] - original[ref[0]];
+      frame.w = original[ref[2]] - original[ref[0]];
+    }
     return NodeKind::Free;
   }
   // (b): exactly two edges on the line, the node strictly between their ends
+  // (and on the line a b within planeTolerance where a plane is a cut)
   if (onLine.size() != 2)
   {
     return NodeKind::Fixed;
   }
   const Index a = *onLine.begin(), b = *onLine.rbegin();
-  if (!CGAL::collinear_are_strictly_ordered_along_line(P(a), P(v), P(b)))
+  if (planes[0].cut < 0 && planes[1].cut < 0)
   {
-    return NodeKind::Fixed;
+    if (!CGAL::collinear_are_strictly_ordered_along_line(P(a), P(v), P(b)))
+    {
+      return NodeKind::Fixed;
+    }
+  }
+  else
+  {
+    const Vec3 ab = original[b] - original[a];
+    const double t = dot(original[v] - original[a], ab) / dot(ab, ab);
+    if (!(t > 0 && t < 1) || norm(original[a] + t * ab - original[v]) > planeTolerance)
+    {
+      return NodeKind::Fixed;
+    }
   }
   frame.origin = original[a];
   frame.u = original[b] - original[a];
@@ -733,6 +778,7 @@ void Relaxer::run(RelaxationResult& result)
   markRegion();
   if (options.mode == RelaxationMode::KeepSurface)
   {
+    planeTolerance = 1e-13 * boundingBoxDiagonal(original);
     classifyExactly();
   }
   else

@@ -10,7 +10,10 @@
 //   kept as a point set, so every volume changes by round-off only. A node
 //   moves only where the move keeps each incident triangle on the same
 //   surface, decided with CGAL's exact predicates on the original
-//   coordinates:
+//   coordinates for surface triangles; interface triangles lie in their
+//   cutting plane by the complex's contract, up to the rounding of points
+//   computed on an inclined plane, so they count as in it when all their
+//   points lie within 1e-13 of the bounding-box diagonal of it:
 //   (a) all incident triangles exactly coplanar and forming closed fans
 //       (an interface node inside its interface, a surface node inside a
 //       planar part of the input): it moves within that plane;
