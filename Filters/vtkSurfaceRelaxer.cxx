@@ -20,6 +20,36 @@
 
 #include <exception>
 
+namespace
+{
+// The figures of the relaxation as one-value arrays of the output's field data.
+void addRelaxationFields(vtkFieldData* fd, const ptm::RelaxationResult& result, int mode)
+{
+  auto addValue = [&](const char* name, double value) {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(name);
+    a->InsertNextValue(value);
+    fd->AddArray(a);
+  };
+  addValue("MinimumAngleBefore", result.before.minimumAngleDegrees);
+  addValue("MinimumAngleAfter", result.after.minimumAngleDegrees);
+  addValue("ShareBelow10DegreesBefore", result.before.shareBelow10Degrees);
+  addValue("ShareBelow10DegreesAfter", result.after.shareBelow10Degrees);
+  addValue("ShareBelow20DegreesBefore", result.before.shareBelow20Degrees);
+  addValue("ShareBelow20DegreesAfter", result.after.shareBelow20Degrees);
+  addValue("MovedNodeCount", static_cast<double>(result.acceptedMoves));
+  // what the relaxation did to the geometry (~1e-15 in KeepSurface mode)
+  addValue("RelaxationMode", static_cast<double>(mode));
+  addValue("VolumeChange", result.change.volumeChange);
+  addValue("MaximumSubdomainVolumeChange", result.change.maximumSubdomainVolumeChange);
+  addValue("SurfaceDeviationOutputToInput", result.change.deviationOutputToInput);
+  addValue("SurfaceDeviationInputToOutput", result.change.deviationInputToOutput);
+  addValue("FreeNodeCount", static_cast<double>(result.freeNodes));
+  addValue("SlidingNodeCount", static_cast<double>(result.slidingNodes));
+  addValue("FixedNodeCount", static_cast<double>(result.fixedNodes));
+}
+} // namespace
+
 vtkStandardNewMacro(vtkSurfaceRelaxer);
 vtkCxxSetObjectMacro(vtkSurfaceRelaxer, Controller, vtkMultiProcessController);
 
@@ -115,7 +145,8 @@ int vtkSurfaceRelaxer::RequestData(
     return 1;
   }
   this->UpdateProgress(0.2);
-  this->SetProgressText(this->Mode == KEEP_SURFACE ? "Relaxing (keeping the surface)" : "Relaxing (smoothing the surface)");
+  this->SetProgressText(
+    this->Mode == KEEP_SURFACE ? "Relaxing (keeping the surface)" : "Relaxing (smoothing the surface)");
 
   ptm::RelaxationOptions options;
   options.mode = this->Mode == SMOOTH_SURFACE ? ptm::RelaxationMode::SmoothSurface : ptm::RelaxationMode::KeepSurface;
@@ -159,28 +190,7 @@ int vtkSurfaceRelaxer::RequestData(
   }
   ptm::complexToPolyData(whole, mine, output);
   vtkFieldData* fd = output->GetFieldData();
-  auto addValue = [&](const char* name, double value) {
-    vtkNew<vtkDoubleArray> a;
-    a->SetName(name);
-    a->InsertNextValue(value);
-    fd->AddArray(a);
-  };
-  addValue("MinimumAngleBefore", result.before.minimumAngleDegrees);
-  addValue("MinimumAngleAfter", result.after.minimumAngleDegrees);
-  addValue("ShareBelow10DegreesBefore", result.before.shareBelow10Degrees);
-  addValue("ShareBelow10DegreesAfter", result.after.shareBelow10Degrees);
-  addValue("ShareBelow20DegreesBefore", result.before.shareBelow20Degrees);
-  addValue("ShareBelow20DegreesAfter", result.after.shareBelow20Degrees);
-  addValue("MovedNodeCount", static_cast<double>(result.acceptedMoves));
-  // what the relaxation did to the geometry (~1e-15 in KeepSurface mode)
-  addValue("RelaxationMode", static_cast<double>(this->Mode));
-  addValue("VolumeChange", result.change.volumeChange);
-  addValue("MaximumSubdomainVolumeChange", result.change.maximumSubdomainVolumeChange);
-  addValue("SurfaceDeviationOutputToInput", result.change.deviationOutputToInput);
-  addValue("SurfaceDeviationInputToOutput", result.change.deviationInputToOutput);
-  addValue("FreeNodeCount", static_cast<double>(result.freeNodes));
-  addValue("SlidingNodeCount", static_cast<double>(result.slidingNodes));
-  addValue("FixedNodeCount", static_cast<double>(result.fixedNodes));
+  addRelaxationFields(fd, result, this->Mode);
   if (input)
   {
     for (const char* name : { "InterfaceNewPoints", "InterfaceTrianglesBelowMinimumAngle",

@@ -640,6 +640,24 @@ bool Relaxer::tryPosition(Index v, const Vec3& q)
 // removed on the box with K = 7.
 bool Relaxer::withinDeviation(Index v) const
 {
+  // Fast and exact: the linear map from each old triangle to its new one
+  // moves every point by at most the largest move of its corners, so when no
+  // corner of the star is farther than the bound from where it was, neither
+  // star is farther than the bound from the other. This skips the sampled
+  // test below for most moves (on the bracket, K = 4, the relaxation took
+  // 2.25 s with the sampled test alone).
+  double largestMove = 0;
+  for (std::size_t t : trianglesOf[v])
+  {
+    for (Index w : c.triangles[t])
+    {
+      largestMove = std::max(largestMove, norm(c.points[w] - original[w]));
+    }
+  }
+  if (largestMove <= maximumMove)
+  {
+    return true;
+  }
   auto distanceTo = [](const Vec3& p, const std::vector<Vec3>& points, const std::vector<std::size_t>& ts,
                       const std::vector<Triangle>& triangles) {
     double best = std::numeric_limits<double>::infinity();
