@@ -20,6 +20,36 @@
 
 #include <exception>
 
+namespace
+{
+// The figures of the relaxation as one-value arrays of the output's field data.
+void addRelaxationFields(vtkFieldData* fd, const ptm::RelaxationResult& result, int mode)
+{
+  auto addValue = [&](const char* name, double value) {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(name);
+    a->InsertNextValue(value);
+    fd->AddArray(a);
+  };
+  addValue("MinimumAngleBefore", result.before.minimumAngleDegrees);
+  addValue("MinimumAngleAfter", result.after.minimumAngleDegrees);
+  addValue("ShareBelow10DegreesBefore", result.before.shareBelow10Degrees);
+  addValue("ShareBelow10DegreesAfter", result.after.shareBelow10Degrees);
+  addValue("ShareBelow20DegreesBefore", result.before.shareBelow20Degrees);
+  addValue("ShareBelow20DegreesAfter", result.after.shareBelow20Degrees);
+  addValue("MovedNodeCount", static_cast<double>(result.acceptedMoves));
+  // what the relaxation did to the geometry (~1e-15 in KeepSurface mode)
+  addValue("RelaxationMode", static_cast<double>(mode));
+  addValue("VolumeChange", result.change.volumeChange);
+  addValue("MaximumSubdomainVolumeChange", result.change.maximumSubdomainVolumeChange);
+  addValue("SurfaceDeviationOutputToInput", result.change.deviationOutputToInput);
+  addValue("SurfaceDeviationInputToOutput", result.change.deviationInputToOutput);
+  addValue("FreeNodeCount", static_cast<double>(result.freeNodes));
+  addValue("SlidingNodeCount", static_cast<double>(result.slidingNodes));
+  addValue("FixedNodeCount", static_cast<double>(result.fixedNodes));
+}
+} // namespace
+
 vtkStandardNewMacro(vtkSurfaceRelaxer);
 vtkCxxSetObjectMacro(vtkSurfaceRelaxer, Controller, vtkMultiProcessController);
 
@@ -72,6 +102,11 @@ int vtkSurfaceRelaxer::RequestData(
   this->UpdateProgress(0.0);
   // nonsense property values (the same on every rank, so every rank stops)
   ptm::PropertyChecks checks("SurfaceRelaxer");
+  checks.Require(this->Mode == KEEP_SURFACE || this->Mode == SMOOTH_SURFACE, "Mode",
+    "be 0 (KeepSurface) or 1 (SmoothSurface)", this->Mode);
+  checks.Require(this->MaximumSurfaceDeviation >= 0.0 && this->MaximumSurfaceDeviation <= 1.0,
+    "MaximumSurfaceDeviation", "lie in [0, 1] (relative to the bounding-box diagonal)",
+    this->MaximumSurfaceDeviation);
   checks.Require(this->NumberOfIterations >= 0 && this->NumberOfIterations <= 1000,
     "NumberOfIterations", "lie in [0, 1000]", this->NumberOfIterations);
   checks.Require(this->RelaxationFactor >= 0.01 && this->RelaxationFactor <= 1.0,
@@ -110,9 +145,12 @@ int vtkSurfaceRelaxer::RequestData(
     return 1;
   }
   this->UpdateProgress(0.2);
-  this->SetProgressText("Relaxing");
+  this->SetProgressText(
+    this->Mode == KEEP_SURFACE ? "Relaxing (keeping the surface)" : "Relaxing (smoothing the surface)");
 
   ptm::RelaxationOptions options;
+  options.mode = this->Mode == SMOOTH_SURFACE ? ptm::RelaxationMode::SmoothSurface : ptm::RelaxationMode::KeepSurface;
+  options.maximumSurfaceDeviation = this->MaximumSurfaceDeviation;
   options.iterations = this->NumberOfIterations;
   options.relaxationFactor = this->RelaxationFactor;
   options.featureAngleDegrees = this->FeatureAngle;
@@ -152,19 +190,7 @@ int vtkSurfaceRelaxer::RequestData(
   }
   ptm::complexToPolyData(whole, mine, output);
   vtkFieldData* fd = output->GetFieldData();
-  auto addValue = [&](const char* name, double value) {
-    vtkNew<vtkDoubleArray> a;
-    a->SetName(name);
-    a->InsertNextValue(value);
-    fd->AddArray(a);
-  };
-  addValue("MinimumAngleBefore", result.before.minimumAngleDegrees);
-  addValue("MinimumAngleAfter", result.after.minimumAngleDegrees);
-  addValue("ShareBelow10DegreesBefore", result.before.shareBelow10Degrees);
-  addValue("ShareBelow10DegreesAfter", result.after.shareBelow10Degrees);
-  addValue("ShareBelow20DegreesBefore", result.before.shareBelow20Degrees);
-  addValue("ShareBelow20DegreesAfter", result.after.shareBelow20Degrees);
-  addValue("MovedNodeCount", static_cast<double>(result.acceptedMoves));
+  addRelaxationFields(fd, result, this->Mode);
   if (input)
   {
     for (const char* name : { "InterfaceNewPoints", "InterfaceTrianglesBelowMinimumAngle",
@@ -185,6 +211,8 @@ int vtkSurfaceRelaxer::RequestData(
 void vtkSurfaceRelaxer::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "Mode: " << (this->Mode == KEEP_SURFACE ? "KeepSurface" : "SmoothSurface") << "\n";
+  os << indent << "MaximumSurfaceDeviation: " << this->MaximumSurfaceDeviation << "\n";
   os << indent << "NumberOfIterations: " << this->NumberOfIterations << "\n";
   os << indent << "RelaxationFactor: " << this->RelaxationFactor << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";

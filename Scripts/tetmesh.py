@@ -39,6 +39,10 @@ def parse_arguments(argv):
     p.add_argument("--coplanar-tolerance", type=float, default=0.0,
                    help="degrees: boundary refinement merges input triangles this close to coplanar "
                         "(changes the surface slightly; default 0 keeps it exactly)")
+    p.add_argument("--relax-mode", default="KeepSurface", choices=["KeepSurface", "SmoothSurface"],
+                   help="KeepSurface (default): the surface stays exactly the same; SmoothSurface: may move it")
+    p.add_argument("--max-surface-deviation", type=float, default=0.01,
+                   help="SmoothSurface: largest surface move, relative to the bounding-box diagonal (default 0.01)")
     p.add_argument("--plugin", default=None, help="path of ParallelTetMesher.so (default: from the build tree)")
     p.add_argument("--json", default=None, help="also write the summary as JSON")
     return p.parse_args(argv)
@@ -115,7 +119,9 @@ def main(argv):
     cutter = run("cut", simple.VolumeBalancedCutter(
         Input=reader, NumberOfSubdomains=args.subdomains, Strategy=args.strategy, Direction=args.direction))
     interfaces = run("interface", simple.InterfaceTriangulator(Input=cutter, MaximumEdgeLength=args.size))
-    relaxed = run("relax", simple.SurfaceRelaxer(Input=interfaces, NumberOfIterations=args.relax_iterations))
+    relaxed = run("relax", simple.SurfaceRelaxer(Input=interfaces, NumberOfIterations=args.relax_iterations,
+                                                 Mode=args.relax_mode,
+                                                 MaximumSurfaceDeviation=args.max_surface_deviation))
     volume = args.size ** 3 / (6 * math.sqrt(2)) if args.size > 0 else 0.0
     mesher = run("volume meshing", simple.ParallelTetMesher(
         Input=relaxed, RadiusEdgeRatio=args.radius_edge_ratio, MaximumVolume=volume,

@@ -14,13 +14,18 @@ from paraview import simple
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOXML import vtkXMLPPolyDataReader, vtkXMLPUnstructuredGridReader
 
-# (surface, K, strategy, direction): every bundled closed surface, K = 2, 4, 7,
-# both strategies, and the OFF reader's ball once.
-CASES = [(surface, K, strategy, "LongestExtent" if strategy == "ParallelPlanes" else "Inertia")
+# (surface, K, strategy, direction, relaxer mode): every bundled closed
+# surface, K = 2, 4, 7, both strategies, the default KeepSurface relaxation;
+# the OFF reader's ball once; the explicit SmoothSurface mode on the bracket
+# and the ball (a CAD part and a curved surface).
+CASES = [(surface, K, strategy, "LongestExtent" if strategy == "ParallelPlanes" else "Inertia", "KeepSurface")
          for surface in ("ball.stl", "torus.stl", "box_with_cavity.stl", "two_bodies.stl", "bracket.stl")
          for K in (2, 4, 7)
          for strategy in ("ParallelPlanes", "RecursiveBisection")]
-CASES.append(("ball.off", 3, "ParallelPlanes", "X"))
+CASES.append(("ball.off", 3, "ParallelPlanes", "X", "KeepSurface"))
+CASES.append(("bracket.stl", 4, "RecursiveBisection", "Inertia", "SmoothSurface"))
+CASES.append(("ball.stl", 4, "RecursiveBisection", "Inertia", "SmoothSurface"))
+SMOOTH_DEVIATION = 0.01  # MaximumSurfaceDeviation of the SmoothSurface cases (the default)
 
 
 def read_all(reader_class, path):
@@ -41,13 +46,14 @@ def main():
             os.remove(os.path.join(out_dir, old)) if os.path.isfile(os.path.join(out_dir, old)) else None
     t.barrier()
     summary = {}
-    for surface, K, strategy, direction in CASES:
+    for surface, K, strategy, direction, mode in CASES:
         name = "%s_K%d_%s_%s" % (os.path.splitext(surface)[0] + os.path.splitext(surface)[1][1:], K, strategy, direction)
+        name += "" if mode == "KeepSurface" else "_" + mode
         reader = simple.OpenDataFile(os.path.join(t.DATA, surface))
         cutter = simple.VolumeBalancedCutter(Input=reader, NumberOfSubdomains=K,
                                              Strategy=strategy, Direction=direction)
         interfaces = simple.InterfaceTriangulator(Input=cutter)
-        relaxed = simple.SurfaceRelaxer(Input=interfaces)
+        relaxed = simple.SurfaceRelaxer(Input=interfaces, Mode=mode, MaximumSurfaceDeviation=SMOOTH_DEVIATION)
         mesher = simple.ParallelTetMesher(Input=relaxed)
         base = os.path.join(out_dir, name)
         simple.SaveData(base + "_complex.pvtp", proxy=interfaces)
@@ -56,7 +62,7 @@ def main():
         simple.SaveData(base + "_boundary.pvtp", proxy=simple.OutputPort(mesher, 1))
         t.barrier()
         if t.rank() == 0:
-            summary[name] = check_case(base, K)
+            summary[name] = check_case(base, K, mode)
             print(name, summary[name])
             sys.stdout.flush()
         for proxy in (mesher, relaxed, interfaces, cutter, reader):
@@ -66,7 +72,39 @@ def main():
             json.dump(summary, f, indent=1)
 
 
-def check_case(base, K):
+def check_relaxation(table, tris, pairs, volumes, rtable, rvolumes, fd, mode):
+    """What the relaxer did to the geometry, measured here and as reported.
+    KeepSurface: every subdomain's volume within 1e-9 (relative), every moved
+    point on the plane of each of its triangles before relaxation (1e-12 of
+    the bounding-box diagonal), reported changes ~0. SmoothSurface: the
+    reported volume change is the one measured here, the deviation within the
+    bound. Both: the smallest angle never gets worse."""
+    def value(array):
+        return float(vtk_to_numpy(fd.GetArray(array))[0])
+    diagonal = float(np.linalg.norm(table.max(axis=0) - table.min(axis=0)))
+    surface = tris[pairs[:, 1] == -1]
+    change = enclosed_volume(rtable, surface) / enclosed_volume(table, surface) - 1
+    assert abs(change - value("VolumeChange")) <= 1e-12 + 1e-6 * abs(change), (change, value("VolumeChange"))
+    assert value("MinimumAngleAfter") >= value("MinimumAngleBefore")
+    if mode == "SmoothSurface":
+        assert value("SurfaceDeviationOutputToInput") <= SMOOTH_DEVIATION
+        assert value("SurfaceDeviationInputToOutput") <= SMOOTH_DEVIATION
+        return change
+    assert np.all(np.abs(rvolumes / volumes - 1) <= 1e-9), np.abs(rvolumes / volumes - 1).max()
+    assert abs(change) <= 1e-9 and value("MaximumSubdomainVolumeChange") <= 1e-9, change
+    assert value("SurfaceDeviationOutputToInput") <= 1e-12 and value("SurfaceDeviationInputToOutput") <= 1e-12
+    moved = np.any(rtable != table, axis=1)
+    for k in range(3):
+        t = tris[moved[tris[:, k]]]
+        p = table[t]
+        normal = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+        normal /= np.linalg.norm(normal, axis=1)[:, None]
+        off = np.abs(np.einsum("ij,ij->i", rtable[t[:, k]] - p[:, 0], normal))
+        assert off.size == 0 or off.max() <= 1e-12 * diagonal, "a moved point left a plane by %g" % off.max()
+    return change
+
+
+def check_case(base, K, mode):
     complex_data = read_all(vtkXMLPPolyDataReader, base + "_complex.pvtp")
     table, tris, pairs, planes = check_complex(complex_data)
     input_volume = enclosed_volume(table, tris[pairs[:, 1] == -1])
@@ -95,6 +133,7 @@ def check_case(base, K):
     rvolumes = subdomain_surfaces_closed(rtable, rtris, rpairs, K)
     surface = rtris[rpairs[:, 1] == -1]
     assert abs(rvolumes.sum() / enclosed_volume(rtable, surface) - 1) < 1e-9
+    volume_change = check_relaxation(table, tris, pairs, volumes, rtable, rvolumes, relaxed.GetFieldData(), mode)
 
     # the boundary port: the outer triangles of the mesh, refined on the
     # relaxed surface, each with its input triangle
@@ -116,7 +155,12 @@ def check_case(base, K):
     order = np.argsort(vtk_to_numpy(mesh.GetCellData().GetGlobalIds()))
     np.savez(base + "_digest.npz", complex_points=table, complex_triangles=tris, complex_pairs=pairs,
              relaxed_points=rtable, mesh_points=coords, mesh_tets=tets[order])
-    figures.update({"balance": balance, "interface_below_min_angle": counted})
+    fd = relaxed.GetFieldData()
+    figures.update({"balance": balance, "interface_below_min_angle": counted, "relax_volume_change": volume_change,
+                    "relax_min_angle": [float(vtk_to_numpy(fd.GetArray(a))[0])
+                                        for a in ("MinimumAngleBefore", "MinimumAngleAfter")],
+                    "relax_below_10": [float(vtk_to_numpy(fd.GetArray(a))[0])
+                                       for a in ("ShareBelow10DegreesBefore", "ShareBelow10DegreesAfter")]})
     return figures
 
 

@@ -112,6 +112,10 @@ def main():
     proxies[3].RelaxationFactor = -1
     expect_failure("RelaxationFactor -1", proxies, "SurfaceRelaxer: RelaxationFactor must lie in [0.01, 1], not -1")
     proxies[3].RelaxationFactor = 0.5
+    proxies[3].MaximumSurfaceDeviation = -1
+    expect_failure("MaximumSurfaceDeviation -1", proxies, "SurfaceRelaxer: MaximumSurfaceDeviation must lie in [0, 1] "
+                   "(relative to the bounding-box diagonal), not -1")
+    proxies[3].MaximumSurfaceDeviation = 0.01
     proxies[1].NumberOfSubdomains = -3
     expect_failure("NumberOfSubdomains -3", proxies, "VolumeBalancedCutter: NumberOfSubdomains must be 0 (one per rank) or between 1 and 1000000, not -3")
     proxies[1].NumberOfSubdomains = 2
