@@ -26,6 +26,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
@@ -103,6 +104,334 @@ double regularTetrahedronEdge(double v)
 {
   return std::cbrt(6.0 * std::sqrt(2.0) * v);
 }
+// One subdomain refined (when asked) and meshed.
+struct MeshedSubdomain
+{
+  ptm::TetMesh mesh;
+  std::string error;
+  std::vector<std::string> warnings;
+  long long pointsAdded = 0;
+  double volumeChange = 0, deviation = 0;
+};
+
+// Refines `surface` (unless `refinement` is null) and meshes it. Where
+// TetGen fails on the refined surface, the surface as it came is meshed
+// instead, with a warning: a subdomain TetGen can mesh must not fail because
+// of the refinement (measured on CAD parts where TetGen stalls on some
+// refined surfaces).
+MeshedSubdomain meshSubdomain(ptm::SubdomainSurface& surface, const ptm::TetMeshingOptions& options,
+  const ptm::SurfaceRefinementOptions* refinement)
+{
+  MeshedSubdomain m;
+  const ptm::SubdomainSurface unrefined = refinement ? surface : ptm::SubdomainSurface{};
+  if (refinement)
+  {
+    const ptm::SurfaceRefinementResult refined = ptm::refineSubdomainSurface(surface, *refinement);
+    if (!refined.ok)
+    {
+      m.error = "boundary refinement: " + refined.error;
+      return m;
+    }
+    m.warnings = refined.warnings;
+    m.pointsAdded = static_cast<long long>(refined.pointsAdded);
+    m.volumeChange = refined.volumeChange;
+    m.deviation = refined.largestDeviation;
+  }
+  ptm::TetMeshingResult r = ptm::meshClosedSurface(surface.surface, options);
+  if (!r.ok && refinement && m.pointsAdded > 0)
+  {
+    m.warnings.push_back("TetGen failed on the refined surface (" + r.error +
+      "); meshed without boundary refinement");
+    surface = unrefined;
+    m.pointsAdded = 0;
+    m.volumeChange = m.deviation = 0;
+    r = ptm::meshClosedSurface(surface.surface, options);
+  }
+  if (!r.ok)
+  {
+    m.error = r.error;
+    return m;
+  }
+  if (r.attempts > 1)
+  {
+    m.warnings.push_back("TetGen crashed or stalled with the points in their canonical order and meshed "
+                         "them in another order (attempt " +
+      std::to_string(r.attempts) + ")");
+  }
+  m.mesh = std::move(r.mesh);
+  return m;
+}
+/// @name What a rank meshed, and how it becomes its piece
+/// @{
+struct OwnedSubdomains
+{
+  explicit OwnedSubdomains(const std::vector<int>& subdomains)
+    : ids(subdomains)
+    , surfaces(subdomains.size())
+    , meshes(subdomains.size())
+    , seconds(subdomains.size(), 0.0)
+    , pointsAdded(subdomains.size(), 0)
+    , volumeChange(subdomains.size(), 0.0)
+    , deviation(subdomains.size(), 0.0)
+  {
+  }
+  std::vector<int> ids; // the subdomains, ascending
+  std::vector<ptm::SubdomainSurface> surfaces;
+  std::vector<ptm::TetMesh> meshes;
+  std::vector<double> seconds;
+  std::vector<long long> pointsAdded; // by the boundary refinement
+  std::vector<double> volumeChange, deviation;
+};
+
+// Every rank's figures, the same on every rank.
+struct MeshTotals
+{
+  ptm::GlobalMeshOffsets offsets;
+  std::vector<long long> tetrahedra; // per subdomain
+  long long boundaryPointsAdded = 0;
+  double relativeVolumeChange = 0, largestDeviation = 0;
+  ptm::DihedralQuality quality;
+};
+
+MeshTotals gatherTotals(
+  vtkMultiProcessController* controller, const ptm::ComplexPiece& piece, const OwnedSubdomains& owned)
+{
+  const int K = piece.complex.subdomainCount;
+  std::vector<long long> counts;
+  std::vector<double> changes;
+  for (std::size_t k = 0; k < owned.ids.size(); ++k)
+  {
+    // every point beyond the complex's own (the refinement's, TetGen's) is
+    // private to the subdomain and numbered with it
+    counts.insert(counts.end(), { owned.ids[k],
+      static_cast<long long>(owned.meshes[k].points.size() - owned.surfaces[k].globalIds.size()),
+      static_cast<long long>(owned.meshes[k].tets.size()), owned.pointsAdded[k] });
+    changes.insert(changes.end(), { static_cast<double>(owned.ids[k]), owned.volumeChange[k], owned.deviation[k] });
+  }
+  MeshTotals totals;
+  const std::vector<long long> allCounts = ptm::allGatherValues(controller, counts);
+  std::vector<long long> interior(K, 0);
+  totals.tetrahedra.assign(K, 0);
+  for (std::size_t k = 0; k + 3 < allCounts.size(); k += 4)
+  {
+    interior[allCounts[k]] = allCounts[k + 1];
+    totals.tetrahedra[allCounts[k]] = allCounts[k + 2];
+    totals.boundaryPointsAdded += allCounts[k + 3];
+  }
+  totals.offsets = ptm::globalMeshOffsets(piece.globalPointCount, interior, totals.tetrahedra);
+  const std::vector<double> allChanges = ptm::allGatherValues(controller, changes);
+  std::vector<double> subdomainChange(K, 0.0);
+  for (std::size_t k = 0; k + 2 < allChanges.size(); k += 3)
+  {
+    subdomainChange[static_cast<int>(allChanges[k])] = allChanges[k + 1];
+    totals.largestDeviation = std::max(totals.largestDeviation, allChanges[k + 2]);
+  }
+  double change = 0, volume = 0; // summed in subdomain order: the same on any number of ranks
+  for (int s = 0; s < K; ++s)
+  {
+    change += subdomainChange[s];
+    volume += piece.subdomainVolume[s];
+  }
+  totals.relativeVolumeChange = volume != 0 ? change / volume : 0.0;
+  // quality in one pass over the tetrahedra this rank made, then reduced
+  for (const ptm::TetMesh& mesh : owned.meshes)
+  {
+    const ptm::DihedralQuality q = ptm::dihedralQuality(mesh);
+    totals.quality.below10Degrees += q.below10Degrees;
+    totals.quality.minimumDihedralDegrees = std::min(totals.quality.minimumDihedralDegrees, q.minimumDihedralDegrees);
+  }
+  std::vector<double> below{ static_cast<double>(totals.quality.below10Degrees) }; // exact below 2^53
+  ptm::allReduceSum(controller, below);
+  std::vector<long long> minimum{ -std::llround(totals.quality.minimumDihedralDegrees * 1e9) };
+  ptm::allReduceMax(controller, minimum);
+  totals.quality.below10Degrees = std::llround(below[0]);
+  totals.quality.minimumDihedralDegrees = -static_cast<double>(minimum[0]) * 1e-9;
+  totals.quality.tetrahedra = totals.offsets.tetrahedronCount;
+  return totals;
+}
+
+// The lowest subdomain touching every complex point, over all ranks: its
+// rank owns the point.
+std::vector<long long> lowestSubdomainOfPoints(
+  vtkMultiProcessController* controller, const ptm::ComplexPiece& piece, const OwnedSubdomains& owned)
+{
+  std::vector<long long> lowest(
+    static_cast<std::size_t>(piece.globalPointCount), std::numeric_limits<long long>::max());
+  for (std::size_t k = 0; k < owned.ids.size(); ++k)
+  {
+    for (ptm::Index g : owned.surfaces[k].globalIds)
+    {
+      lowest[g] = std::min<long long>(lowest[g], owned.ids[k]);
+    }
+  }
+  ptm::allReduceMin(controller, lowest);
+  return lowest;
+}
+
+// The global id of point i of subdomain k's mesh: the complex's id for the
+// surface points it came with, else one of the subdomain's own.
+long long globalIdOf(const OwnedSubdomains& owned, const MeshTotals& totals, std::size_t k, std::size_t i)
+{
+  const std::size_t shared = owned.surfaces[k].globalIds.size();
+  return i < shared ? static_cast<long long>(owned.surfaces[k].globalIds[i])
+                    : totals.offsets.firstInteriorPoint[owned.ids[k]] + static_cast<long long>(i - shared);
+}
+
+vtkIdTypeArray* newIdArray(const char* name)
+{
+  vtkIdTypeArray* a = vtkIdTypeArray::New();
+  a->SetName(name);
+  return a;
+}
+
+vtkIntArray* newIntArray(const char* name)
+{
+  vtkIntArray* a = vtkIntArray::New();
+  a->SetName(name);
+  return a;
+}
+
+void assembleVolume(const OwnedSubdomains& owned, const MeshTotals& totals, const ptm::ComplexPiece& piece,
+  const std::vector<long long>& lowest, int rank, vtkUnstructuredGrid* output)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkSmartPointer<vtkIdTypeArray> pointIds = vtk::TakeSmartPointer(newIdArray("GlobalPointIds"));
+  vtkNew<vtkUnsignedCharArray> ghosts;
+  ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  vtkNew<vtkCellArray> cells;
+  vtkSmartPointer<vtkIdTypeArray> cellIds = vtk::TakeSmartPointer(newIdArray("GlobalCellIds"));
+  vtkSmartPointer<vtkIntArray> subdomainIds = vtk::TakeSmartPointer(newIntArray("SubdomainId"));
+  vtkSmartPointer<vtkIntArray> ranks = vtk::TakeSmartPointer(newIntArray("Rank"));
+  std::unordered_map<long long, vtkIdType> localOf; // a point shared by two subdomains here appears once
+  for (std::size_t k = 0; k < owned.ids.size(); ++k)
+  {
+    const int s = owned.ids[k];
+    const ptm::TetMesh& mesh = owned.meshes[k];
+    const std::size_t shared = owned.surfaces[k].globalIds.size();
+    std::vector<vtkIdType> local(mesh.points.size());
+    for (std::size_t i = 0; i < mesh.points.size(); ++i)
+    {
+      const long long gid = globalIdOf(owned, totals, k, i);
+      auto it = localOf.find(gid);
+      if (it == localOf.end())
+      {
+        const int owner = i < shared ? ptm::owningRank(static_cast<int>(lowest[gid]), piece.subdomainRank) : rank;
+        it = localOf.emplace(gid, points->InsertNextPoint(mesh.points[i].data())).first;
+        pointIds->InsertNextValue(gid);
+        ghosts->InsertNextValue(owner == rank ? 0 : vtkDataSetAttributes::DUPLICATEPOINT);
+      }
+      local[i] = it->second;
+    }
+    for (std::size_t t = 0; t < mesh.tets.size(); ++t)
+    {
+      const vtkIdType ids[4] = { local[mesh.tets[t][0]], local[mesh.tets[t][1]], local[mesh.tets[t][2]],
+        local[mesh.tets[t][3]] };
+      cells->InsertNextCell(4, ids);
+      cellIds->InsertNextValue(totals.offsets.firstTetrahedron[s] + static_cast<long long>(t));
+      subdomainIds->InsertNextValue(s);
+      ranks->InsertNextValue(rank);
+    }
+  }
+  output->Initialize();
+  output->SetPoints(points);
+  output->SetCells(VTK_TETRA, cells);
+  output->GetPointData()->SetGlobalIds(pointIds);
+  output->GetPointData()->AddArray(ghosts);
+  output->GetCellData()->SetGlobalIds(cellIds);
+  output->GetCellData()->AddArray(subdomainIds);
+  output->GetCellData()->AddArray(ranks);
+  output->GetCellData()->SetActiveScalars("SubdomainId");
+}
+
+// The outer boundary triangles (the refined surface) with their input triangle.
+void assembleBoundary(const OwnedSubdomains& owned, const MeshTotals& totals, vtkPolyData* boundary)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkSmartPointer<vtkIdTypeArray> pointIds = vtk::TakeSmartPointer(newIdArray("GlobalPointIds"));
+  vtkNew<vtkCellArray> cells;
+  vtkSmartPointer<vtkIdTypeArray> sources = vtk::TakeSmartPointer(newIdArray(ptm::arrays::SourceFaceId));
+  vtkSmartPointer<vtkIntArray> subdomains = vtk::TakeSmartPointer(newIntArray("SubdomainId"));
+  std::unordered_map<long long, vtkIdType> localOf;
+  for (std::size_t k = 0; k < owned.ids.size(); ++k)
+  {
+    const ptm::SubdomainSurface& surface = owned.surfaces[k];
+    for (std::size_t t = 0; t < surface.surface.triangles.size(); ++t)
+    {
+      if (surface.otherSide[t] >= 0)
+      {
+        continue;
+      }
+      vtkIdType ids[3];
+      for (int c = 0; c < 3; ++c)
+      {
+        const ptm::Index p = surface.surface.triangles[t][c];
+        const long long gid = globalIdOf(owned, totals, k, static_cast<std::size_t>(p));
+        auto it = localOf.find(gid);
+        if (it == localOf.end())
+        {
+          it = localOf.emplace(gid, points->InsertNextPoint(surface.surface.points[p].data())).first;
+          pointIds->InsertNextValue(gid);
+        }
+        ids[c] = it->second;
+      }
+      cells->InsertNextCell(3, ids);
+      sources->InsertNextValue(surface.sourceFaces[t]);
+      subdomains->InsertNextValue(owned.ids[k]);
+    }
+  }
+  boundary->Initialize();
+  boundary->SetPoints(points);
+  boundary->SetPolys(cells);
+  boundary->GetPointData()->SetGlobalIds(pointIds);
+  boundary->GetCellData()->AddArray(sources);
+  boundary->GetCellData()->AddArray(subdomains);
+}
+
+void addTotals(
+  const ptm::ComplexPiece& piece, const OwnedSubdomains& owned, const MeshTotals& totals, vtkFieldData* fd)
+{
+  auto addCount = [&](const char* name, long long value) {
+    vtkSmartPointer<vtkIdTypeArray> a = vtk::TakeSmartPointer(newIdArray(name));
+    a->InsertNextValue(value);
+    fd->AddArray(a);
+  };
+  auto addValue = [&](const char* name, double value) {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(name);
+    a->InsertNextValue(value);
+    fd->AddArray(a);
+  };
+  const int K = piece.complex.subdomainCount;
+  addCount(ptm::arrays::NumberOfSubdomains, K);
+  addCount("GlobalPointCount", totals.offsets.pointCount);
+  addCount("GlobalCellCount", totals.offsets.tetrahedronCount);
+  addCount("BoundaryPointsAdded", totals.boundaryPointsAdded);
+  addValue("BoundaryVolumeChange", totals.relativeVolumeChange);
+  addValue("BoundaryLargestDeviation", totals.largestDeviation);
+  addCount("TetrahedraBelow10Degrees", totals.quality.below10Degrees);
+  addValue("MinimumDihedralAngle", totals.quality.minimumDihedralDegrees);
+  vtkSmartPointer<vtkIdTypeArray> perSubdomain = vtk::TakeSmartPointer(newIdArray("SubdomainTetrahedra"));
+  for (long long t : totals.tetrahedra)
+  {
+    perSubdomain->InsertNextValue(t);
+  }
+  fd->AddArray(perSubdomain);
+  vtkSmartPointer<vtkIntArray> subdomainRank = vtk::TakeSmartPointer(newIntArray("SubdomainRank"));
+  for (int s = 0; s < K; ++s)
+  {
+    subdomainRank->InsertNextValue(piece.subdomainRank[s]);
+  }
+  fd->AddArray(subdomainRank);
+  double seconds = 0;
+  for (double t : owned.seconds)
+  {
+    seconds += t;
+  }
+  addValue("RankMeshingSeconds", seconds);
+}
+/// @}
 } // namespace
 
 vtkStandardNewMacro(vtkParallelTetMesher);
@@ -215,11 +544,9 @@ int vtkParallelTetMesher::RequestData(
   {
     return fail(tooLarge);
   }
-  std::vector<ptm::SubdomainSurface> surfaces(mine.size());
-  std::vector<ptm::TetMesh> meshes(mine.size());
-  std::vector<double> seconds(mine.size(), 0.0);
-  std::vector<long long> added(mine.size(), 0); // points the boundary refinement put on the surface
-  std::vector<double> volumeChange(mine.size(), 0.0), deviation(mine.size(), 0.0); // and how it moved it
+  OwnedSubdomains owned(mine);
+  std::vector<ptm::SubdomainSurface>& surfaces = owned.surfaces;
+  std::vector<ptm::TetMesh>& meshes = owned.meshes;
   for (std::size_t k = 0; k < mine.size() && localError.empty(); ++k)
   {
     const int s = mine[k];
@@ -233,39 +560,25 @@ int vtkParallelTetMesher::RequestData(
     const auto start = std::chrono::steady_clock::now();
     try
     {
-      if (this->BoundaryRefinement && options.maximumVolume > 0)
+      ptm::SurfaceRefinementOptions refinement;
+      refinement.size = regularTetrahedronEdge(options.maximumVolume);
+      refinement.minimumAngleDegrees = this->BoundaryMinimumAngle;
+      refinement.coplanarToleranceDegrees = this->CoplanarTolerance;
+      const bool refine = this->BoundaryRefinement && options.maximumVolume > 0;
+      MeshedSubdomain m = meshSubdomain(surfaces[k], options, refine ? &refinement : nullptr);
+      for (const std::string& w : m.warnings)
       {
-        ptm::SurfaceRefinementOptions refinement;
-        refinement.size = regularTetrahedronEdge(options.maximumVolume);
-        refinement.minimumAngleDegrees = this->BoundaryMinimumAngle;
-        refinement.coplanarToleranceDegrees = this->CoplanarTolerance;
-        const ptm::SurfaceRefinementResult refined = ptm::refineSubdomainSurface(surfaces[k], refinement);
-        if (!refined.ok)
-        {
-          localError = where.str() + "boundary refinement: " + refined.error;
-          break;
-        }
-        for (const std::string& w : refined.warnings)
-        {
-          vtkWarningMacro(<< where.str() << w);
-        }
-        added[k] = static_cast<long long>(refined.pointsAdded);
-        volumeChange[k] = refined.volumeChange;
-        deviation[k] = refined.largestDeviation;
+        vtkWarningMacro(<< where.str() << w);
       }
-      ptm::TetMeshingResult r = ptm::meshClosedSurface(surfaces[k].surface, options);
-      if (!r.ok)
+      if (!m.error.empty())
       {
-        localError = where.str() + r.error;
+        localError = where.str() + m.error;
         break;
       }
-      if (r.attempts > 1)
-      {
-        vtkWarningMacro(<< where.str() << "TetGen crashed or stalled with the points in their "
-                        << "canonical order and meshed them in another order (attempt " << r.attempts
-                        << ")");
-      }
-      meshes[k] = std::move(r.mesh);
+      owned.pointsAdded[k] = m.pointsAdded;
+      owned.volumeChange[k] = m.volumeChange;
+      owned.deviation[k] = m.deviation;
+      meshes[k] = std::move(m.mesh);
     }
     catch (const std::bad_alloc&)
     {
@@ -277,7 +590,7 @@ int vtkParallelTetMesher::RequestData(
       localError = where.str() + e.what();
       break;
     }
-    seconds[k] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    owned.seconds[k] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     this->UpdateProgress(0.05 + 0.8 * static_cast<double>(k + 1) / mine.size());
   }
   if (!ptm::agreeAllSucceeded(controller, localError.empty(), localError, message))
@@ -291,224 +604,16 @@ int vtkParallelTetMesher::RequestData(
     return 1;
   }
 
-  // Global numbering from every subdomain's counts.
   this->SetProgressText("Numbering");
-  std::vector<long long> counts;
-  for (std::size_t k = 0; k < mine.size(); ++k)
-  {
-    counts.push_back(mine[k]);
-    // every point beyond the complex's own (the refinement's, TetGen's) is
-    // private to the subdomain and numbered with it
-    counts.push_back(static_cast<long long>(meshes[k].points.size() - surfaces[k].globalIds.size()));
-    counts.push_back(static_cast<long long>(meshes[k].tets.size()));
-    counts.push_back(added[k]);
-  }
-  const std::vector<long long> allCounts = ptm::allGatherValues(controller, counts);
-  std::vector<double> changes;
-  ptm::DihedralQuality quality; // this rank's, then every rank's
-  for (std::size_t k = 0; k < mine.size(); ++k)
-  {
-    changes.insert(changes.end(), { static_cast<double>(mine[k]), volumeChange[k], deviation[k] });
-    const ptm::DihedralQuality q = ptm::dihedralQuality(meshes[k]);
-    quality.below10Degrees += q.below10Degrees;
-    quality.minimumDihedralDegrees = std::min(quality.minimumDihedralDegrees, q.minimumDihedralDegrees);
-  }
-  {
-    std::vector<double> below{ static_cast<double>(quality.below10Degrees) }; // exact below 2^53
-    ptm::allReduceSum(controller, below);
-    std::vector<long long> minimum{ -std::llround(quality.minimumDihedralDegrees * 1e9) };
-    ptm::allReduceMax(controller, minimum);
-    quality.below10Degrees = std::llround(below[0]);
-    quality.minimumDihedralDegrees = -static_cast<double>(minimum[0]) * 1e-9;
-  }
-  const std::vector<double> allChanges = ptm::allGatherValues(controller, changes);
-  std::vector<double> subdomainChange(K, 0.0);
-  double largestDeviation = 0;
-  for (std::size_t k = 0; k + 2 < allChanges.size(); k += 3)
-  {
-    subdomainChange[static_cast<int>(allChanges[k])] = allChanges[k + 1];
-    largestDeviation = std::max(largestDeviation, allChanges[k + 2]);
-  }
-  double totalChange = 0, totalVolume = 0; // summed in subdomain order: the same on any number of ranks
-  for (int s = 0; s < K; ++s)
-  {
-    totalChange += subdomainChange[s];
-    totalVolume += piece.subdomainVolume[s];
-  }
-  std::vector<long long> interior(K, 0), tets(K, 0);
-  long long boundaryPointsAdded = 0;
-  for (std::size_t k = 0; k + 3 < allCounts.size(); k += 4)
-  {
-    interior[allCounts[k]] = allCounts[k + 1];
-    tets[allCounts[k]] = allCounts[k + 2];
-    boundaryPointsAdded += allCounts[k + 3];
-  }
-  const ptm::GlobalMeshOffsets offsets =
-    ptm::globalMeshOffsets(piece.globalPointCount, interior, tets);
-
-  // Owner of every surface point: the rank of the lowest subdomain touching it.
-  std::vector<long long> lowest(static_cast<std::size_t>(piece.globalPointCount),
-    std::numeric_limits<long long>::max());
-  for (std::size_t k = 0; k < mine.size(); ++k)
-  {
-    for (ptm::Index g : surfaces[k].globalIds)
-    {
-      lowest[g] = std::min<long long>(lowest[g], mine[k]);
-    }
-  }
-  ptm::allReduceMin(controller, lowest);
-
-  // Assemble this rank's piece.
+  const MeshTotals totals = gatherTotals(controller, piece, owned);
+  const std::vector<long long> lowest = lowestSubdomainOfPoints(controller, piece, owned);
   this->SetProgressText("Assembling");
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkIdTypeArray> pointIds;
-  pointIds->SetName("GlobalPointIds");
-  vtkNew<vtkUnsignedCharArray> ghosts;
-  ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
-  std::unordered_map<long long, vtkIdType> localOf;
-  auto addPoint = [&](long long gid, const ptm::Vec3& x, int owner) {
-    auto it = localOf.find(gid);
-    if (it != localOf.end())
-    {
-      return it->second;
-    }
-    const vtkIdType id = points->InsertNextPoint(x.data());
-    pointIds->InsertNextValue(gid);
-    ghosts->InsertNextValue(owner == rank ? 0 : vtkDataSetAttributes::DUPLICATEPOINT);
-    localOf.emplace(gid, id);
-    return id;
-  };
-  vtkNew<vtkCellArray> cells;
-  vtkNew<vtkIdTypeArray> cellIds;
-  cellIds->SetName("GlobalCellIds");
-  vtkNew<vtkIntArray> subdomainIds;
-  subdomainIds->SetName("SubdomainId");
-  vtkNew<vtkIntArray> ranks;
-  ranks->SetName("Rank");
-  vtkNew<vtkPoints> boundaryPoints;
-  boundaryPoints->SetDataTypeToDouble();
-  vtkNew<vtkIdTypeArray> boundaryPointIds;
-  boundaryPointIds->SetName("GlobalPointIds");
-  std::unordered_map<long long, vtkIdType> boundaryLocalOf;
-  vtkNew<vtkCellArray> boundaryCells;
-  vtkNew<vtkIdTypeArray> boundarySources;
-  boundarySources->SetName(ptm::arrays::SourceFaceId);
-  vtkNew<vtkIntArray> boundarySubdomains;
-  boundarySubdomains->SetName("SubdomainId");
-  for (std::size_t k = 0; k < mine.size(); ++k)
-  {
-    const int s = mine[k];
-    const ptm::SubdomainSurface& surface = surfaces[k];
-    const ptm::TetMesh& mesh = meshes[k];
-    const std::size_t nShared = surface.globalIds.size(); // the complex's points, maybe shared
-    auto globalIdOf = [&](std::size_t i) {
-      return i < nShared ? static_cast<long long>(surface.globalIds[i])
-                         : offsets.firstInteriorPoint[s] + static_cast<long long>(i - nShared);
-    };
-    std::vector<vtkIdType> local(mesh.points.size());
-    for (std::size_t i = 0; i < mesh.points.size(); ++i)
-    {
-      const long long gid = globalIdOf(i);
-      const int owner = i < nShared ? ptm::owningRank(static_cast<int>(lowest[gid]), piece.subdomainRank) : rank;
-      local[i] = addPoint(gid, mesh.points[i], owner);
-    }
-    for (std::size_t t = 0; t < mesh.tets.size(); ++t)
-    {
-      const vtkIdType ids[4] = { local[mesh.tets[t][0]], local[mesh.tets[t][1]],
-        local[mesh.tets[t][2]], local[mesh.tets[t][3]] };
-      cells->InsertNextCell(4, ids);
-      cellIds->InsertNextValue(offsets.firstTetrahedron[s] + static_cast<long long>(t));
-      subdomainIds->InsertNextValue(s);
-      ranks->InsertNextValue(rank);
-    }
-    for (std::size_t t = 0; t < surface.surface.triangles.size(); ++t)
-    {
-      if (surface.otherSide[t] >= 0)
-      {
-        continue;
-      }
-      vtkIdType ids[3];
-      for (int c = 0; c < 3; ++c)
-      {
-        const ptm::Index p = surface.surface.triangles[t][c];
-        const long long gid = globalIdOf(static_cast<std::size_t>(p));
-        auto it = boundaryLocalOf.find(gid);
-        if (it == boundaryLocalOf.end())
-        {
-          it = boundaryLocalOf.emplace(gid, boundaryPoints->InsertNextPoint(surface.surface.points[p].data())).first;
-          boundaryPointIds->InsertNextValue(gid);
-        }
-        ids[c] = it->second;
-      }
-      boundaryCells->InsertNextCell(3, ids);
-      boundarySources->InsertNextValue(surface.sourceFaces[t]);
-      boundarySubdomains->InsertNextValue(s);
-    }
-  }
-  output->Initialize();
-  output->SetPoints(points);
-  output->SetCells(VTK_TETRA, cells);
-  output->GetPointData()->SetGlobalIds(pointIds);
-  output->GetPointData()->AddArray(ghosts);
-  output->GetCellData()->SetGlobalIds(cellIds);
-  output->GetCellData()->AddArray(subdomainIds);
-  output->GetCellData()->AddArray(ranks);
-  output->GetCellData()->SetActiveScalars("SubdomainId");
-  vtkFieldData* fd = output->GetFieldData();
-  auto addCount = [&](vtkFieldData* to, const char* name, long long value) {
-    vtkNew<vtkIdTypeArray> a;
-    a->SetName(name);
-    a->InsertNextValue(value);
-    to->AddArray(a);
-  };
-  addCount(fd, ptm::arrays::NumberOfSubdomains, K);
-  addCount(fd, "GlobalPointCount", offsets.pointCount);
-  addCount(fd, "GlobalCellCount", offsets.tetrahedronCount);
-  addCount(fd, "BoundaryPointsAdded", boundaryPointsAdded);
-  auto addValue = [&](const char* name, double value) {
-    vtkNew<vtkDoubleArray> a;
-    a->SetName(name);
-    a->InsertNextValue(value);
-    fd->AddArray(a);
-  };
-  addValue("BoundaryVolumeChange", totalVolume != 0 ? totalChange / totalVolume : 0.0);
-  addValue("BoundaryLargestDeviation", largestDeviation);
-  addCount(fd, "TetrahedraBelow10Degrees", quality.below10Degrees);
-  addValue("MinimumDihedralAngle", quality.minimumDihedralDegrees);
-  vtkNew<vtkIdTypeArray> perSubdomain;
-  perSubdomain->SetName("SubdomainTetrahedra");
-  for (long long t : tets)
-  {
-    perSubdomain->InsertNextValue(t);
-  }
-  fd->AddArray(perSubdomain);
-  vtkNew<vtkIntArray> subdomainRank;
-  subdomainRank->SetName("SubdomainRank");
-  for (int s = 0; s < K; ++s)
-  {
-    subdomainRank->InsertNextValue(piece.subdomainRank[s]);
-  }
-  fd->AddArray(subdomainRank);
-  vtkNew<vtkDoubleArray> times;
-  times->SetName("RankMeshingSeconds");
-  double total = 0;
-  for (double t : seconds)
-  {
-    total += t;
-  }
-  times->InsertNextValue(total);
-  fd->AddArray(times);
-
-  boundary->Initialize();
-  boundary->SetPoints(boundaryPoints);
-  boundary->SetPolys(boundaryCells);
-  boundary->GetPointData()->SetGlobalIds(boundaryPointIds);
-  boundary->GetCellData()->AddArray(boundarySources);
-  boundary->GetCellData()->AddArray(boundarySubdomains);
+  assembleVolume(owned, totals, piece, lowest, rank, output);
+  assembleBoundary(owned, totals, boundary);
+  addTotals(piece, owned, totals, output->GetFieldData());
   // the same totals on the small boundary port, so a summary can be fetched
   // without gathering the volume mesh onto one process
-  boundary->GetFieldData()->ShallowCopy(fd);
+  boundary->GetFieldData()->ShallowCopy(output->GetFieldData());
   this->UpdateProgress(1.0);
   return 1;
 }
