@@ -8,7 +8,8 @@ points by their GlobalPointIds (the same id must carry bit-identical
 coordinates in every piece) and checks:
 
 * every tetrahedron has positive volume (no tetrahedron appears twice);
-* every face is shared by at most 2 tetrahedra; the faces used once (the
+* every face is shared by at most 2 tetrahedra, lying on its two sides (once
+  in each orientation); the faces used once (the
   boundary) form a closed surface: every boundary edge in exactly 2 of them;
 * those boundary faces are exactly the triangles of OUT_boundary.pvtp (by ids);
 * the boundary area equals the input surface's area (relative 1e-6: the
@@ -105,6 +106,14 @@ def check(pvtu, input_stats):
     inverse = inverse.ravel()
     if use.max() > 2:
         problems.append("%d faces shared by more than 2 tetrahedra" % (use > 2).sum())
+    # a face shared by 2 tetrahedra must come once in each orientation (else the
+    # two lie on the same side of it: the mesh folds over itself)
+    rot = np.argmin(faces, axis=1)
+    oriented = faces[np.arange(len(faces))[:, None], (rot[:, None] + np.arange(3)) % 3]
+    _, oriented_use = np.unique(oriented, axis=0, return_counts=True)
+    if (oriented_use > 1).any():
+        problems.append("%d interior faces have both tetrahedra on the same side (the mesh folds)" % (
+            (oriented_use > 1).sum()))
     boundary = faces[use[inverse] == 1]  # oriented outward (faces are written with outward normals)
     edges = np.sort(np.concatenate([boundary[:, [0, 1]], boundary[:, [1, 2]], boundary[:, [2, 0]]]), axis=1)
     _, edge_use = np.unique(edges, axis=0, return_counts=True)
