@@ -198,6 +198,8 @@ def classify(error):
         return "timeout"
     if "intersect" in e:
         return "self-intersecting subdomain"
+    if "boundary differs" in e:
+        return "TetGen changed a subdomain's boundary"
     if "tetgen" in e:
         return "TetGen crash/stall"
     return "other"
