@@ -1,0 +1,155 @@
+"""Independent conformity check of a pipeline result (numpy + meshio only;
+nothing of the plugin or of ParaView is used).
+
+    /usr/bin/python3 conformity.py MESH.pvtu SURFACE.off
+
+check(pvtu, input_stats) reads every .vtu piece of the .pvtu, merges the
+points by their GlobalPointIds (the same id must carry bit-identical
+coordinates in every piece) and checks:
+
+* every tetrahedron has positive volume (no tetrahedron appears twice);
+* every face is shared by at most 2 tetrahedra, lying on its two sides (once
+  in each orientation); the faces used once (the
+  boundary) form a closed surface: every boundary edge in exactly 2 of them;
+* those boundary faces are exactly the triangles of OUT_boundary.pvtp (by ids);
+* the boundary area equals the input surface's area (relative 1e-6: the
+  boundary must lie on the input surface; moving a node within a flat face
+  keeps the area, moving it off a curved one does not).
+
+conforming is true when none of these fails. It also returns the relative
+volume error |V_mesh - V_input| / V_input (the goal is 1e-9, reported apart)
+and the relative area error.
+"""
+import contextlib
+import io
+import os
+import sys
+import xml.etree.ElementTree as ET
+
+import numpy as np
+
+AREA_TOLERANCE = 1e-6
+
+
+def pieces(path):
+    root = ET.parse(path).getroot()
+    folder = os.path.dirname(os.path.abspath(path))
+    return [os.path.join(folder, p.get("Source")) for p in root.iter("Piece")]
+
+
+def read_polydata(path):
+    """(points, GlobalPointIds, triangles) of a .vtp piece (meshio does not read .vtp)."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    data = reader.GetOutput()
+    gids = data.GetPointData().GetArray("GlobalPointIds")
+    if data.GetNumberOfPolys() == 0:
+        return None, (None if gids is None else vtk_to_numpy(gids).astype(np.int64)), np.zeros((0, 3), np.int64)
+    offsets = vtk_to_numpy(data.GetPolys().GetOffsetsArray())
+    conn = vtk_to_numpy(data.GetPolys().GetConnectivityArray()).astype(np.int64)
+    if not (np.diff(offsets) == 3).all():
+        raise ValueError("%s: boundary cells that are not triangles" % path)
+    return None, (None if gids is None else vtk_to_numpy(gids).astype(np.int64)), conn.reshape(-1, 3)
+
+
+def read_piece(path, cell_type):
+    import meshio
+
+    if path.endswith(".vtp"):
+        return read_polydata(path)
+
+    with contextlib.redirect_stdout(io.StringIO()):
+        m = meshio.read(path)
+    gids = m.point_data.get("GlobalPointIds")
+    cells = [b.data for b in m.cells if b.type == cell_type]
+    cells = np.concatenate(cells) if cells else np.zeros((0, 4 if cell_type == "tetra" else 3), dtype=np.int64)
+    return m.points.astype(np.float64), (None if gids is None else np.asarray(gids).astype(np.int64).ravel()), cells
+
+
+def check(pvtu, input_stats):
+    problems = []
+    all_gids, all_coords, tets = [], [], []
+    for piece in pieces(pvtu):
+        points, gids, cells = read_piece(piece, "tetra")
+        if gids is None:
+            if len(cells):
+                problems.append("%s has no GlobalPointIds" % os.path.basename(piece))
+            continue
+        all_gids.append(gids)
+        all_coords.append(points)
+        tets.append(gids[cells])
+    if problems:
+        return {"conforming": False, "problems": problems}
+    gids = np.concatenate(all_gids)
+    coords = np.concatenate(all_coords)
+    tets = np.concatenate(tets)
+    order = np.argsort(gids, kind="stable")
+    g, c = gids[order], coords[order]
+    same = g[1:] == g[:-1]
+    if not np.array_equal(c[1:][same].view(np.uint64), c[:-1][same].view(np.uint64)):
+        problems.append("a global point id has different coordinates in different pieces")
+    table = np.zeros((g.max() + 1, 3))
+    table[g] = c
+    p = table[tets]
+    volumes = np.einsum("ij,ij->i", p[:, 1] - p[:, 0], np.cross(p[:, 2] - p[:, 0], p[:, 3] - p[:, 0])) / 6.0
+    if (volumes <= 0).any():
+        problems.append("%d tetrahedra with non-positive volume (min %.3g)" % ((volumes <= 0).sum(), volumes.min()))
+    dup = len(tets) - len(np.unique(np.sort(tets, axis=1), axis=0))
+    if dup:
+        problems.append("%d tetrahedra appear twice" % dup)
+    faces = np.concatenate([tets[:, [1, 2, 3]], tets[:, [0, 3, 2]], tets[:, [0, 1, 3]], tets[:, [0, 2, 1]]])
+    keys, inverse, use = np.unique(np.sort(faces, axis=1), axis=0, return_inverse=True, return_counts=True)
+    inverse = inverse.ravel()
+    if use.max() > 2:
+        problems.append("%d faces shared by more than 2 tetrahedra" % (use > 2).sum())
+    # a face shared by 2 tetrahedra must come once in each orientation (else the
+    # two lie on the same side of it: the mesh folds over itself)
+    rot = np.argmin(faces, axis=1)
+    oriented = faces[np.arange(len(faces))[:, None], (rot[:, None] + np.arange(3)) % 3]
+    _, oriented_use = np.unique(oriented, axis=0, return_counts=True)
+    if (oriented_use > 1).any():
+        problems.append("%d interior faces have both tetrahedra on the same side (the mesh folds)" % (
+            (oriented_use > 1).sum()))
+    boundary = faces[use[inverse] == 1]  # oriented outward (faces are written with outward normals)
+    edges = np.sort(np.concatenate([boundary[:, [0, 1]], boundary[:, [1, 2]], boundary[:, [2, 0]]]), axis=1)
+    _, edge_use = np.unique(edges, axis=0, return_counts=True)
+    if (edge_use != 2).any():
+        problems.append("the boundary is not closed: %d edges not in exactly 2 boundary faces" % (edge_use != 2).sum())
+    bfile = os.path.splitext(pvtu)[0] + "_boundary.pvtp"
+    if os.path.isfile(bfile):
+        ref = []
+        for piece in pieces(bfile):
+            _, bg, tri = read_piece(piece, "triangle")
+            if bg is not None and len(tri):
+                ref.append(bg[tri])
+        ref = np.unique(np.sort(np.concatenate(ref), axis=1), axis=0) if ref else np.zeros((0, 3), dtype=np.int64)
+        mine = np.unique(np.sort(boundary, axis=1), axis=0)
+        if mine.shape != ref.shape or not np.array_equal(mine, ref):
+            problems.append("boundary faces (%d) differ from %s (%d)" % (len(mine), os.path.basename(bfile), len(ref)))
+    bp = table[boundary]
+    area = 0.5 * np.linalg.norm(np.cross(bp[:, 1] - bp[:, 0], bp[:, 2] - bp[:, 0]), axis=1).sum()
+    enclosed = np.einsum("ij,ij->i", bp[:, 0], np.cross(bp[:, 1], bp[:, 2])).sum() / 6.0
+    volume = volumes.sum()
+    area_error = abs(area - input_stats["area"]) / input_stats["area"]
+    if area_error > AREA_TOLERANCE:
+        problems.append("boundary area differs from the input's by %.2e (relative)" % area_error)
+    if abs(enclosed - volume) > 1e-9 * abs(volume):
+        problems.append("tetrahedra volume %.12g differs from the volume the boundary encloses %.12g" % (
+            volume, enclosed))
+    return {"conforming": not problems, "problems": problems, "tetrahedra": int(len(tets)),
+            "points": int(len(np.unique(g))), "volume": float(volume),
+            "volume_error": float(abs(volume - input_stats["volume"]) / abs(input_stats["volume"])),
+            "area_error": float(area_error), "boundary_faces": int(len(boundary))}
+
+
+if __name__ == "__main__":
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import json
+
+    import surface_tool
+
+    print(json.dumps(check(sys.argv[1], surface_tool.stats(sys.argv[2]))))

@@ -1,0 +1,189 @@
+#!/usr/bin/env bash
+# Build the corpus of real closed surfaces (issue #18): every file comes from a
+# Debian package and was modelled by someone outside this project; CAD models
+# are tessellated by their own tool (OpenSCAD, OpenCASCADE's incmesh, Gmsh).
+#
+#   bash Testing/Corpus/fetch.sh [OUT_DIR]        # default out/corpus
+#
+# Writes OUT_DIR/NAME.off for every surface that is closed, edge- and
+# vertex-manifold, consistently oriented, encloses a positive volume and does
+# not intersect itself (CGAL exact check, check_surface.cpp), OUT_DIR/dirty/
+# for the others, and OUT_DIR/corpus.tsv with one row per candidate (status,
+# reason, sizes, origin). Deterministic: the same packages give the same bytes
+# (single-threaded tessellators, fixed parameters, sorted lists).
+set -euo pipefail
+HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+OUT="${1:-out/corpus}"
+mkdir -p "$OUT"
+OUT="$(cd "$OUT" && pwd)"
+WORK="$OUT/.work"
+rm -rf "$WORK" "$OUT/dirty" "$OUT"/*.off
+mkdir -p "$WORK/raw" "$WORK/lib" "$OUT/dirty"
+
+PACKAGES="openscad occt-draw occt-misc libcgal-demo libcgal-dev gmsh gmsh-doc g++ libgmp-dev libmpfr-dev python3-numpy"
+missing=""
+for p in $PACKAGES; do dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"; done
+if [ -n "$missing" ]; then
+    echo "fetch: installing$missing"
+    export DEBIAN_FRONTEND=noninteractive
+    apt-get update -qq
+    apt-get install -y -qq --no-install-recommends $missing >/dev/null
+fi
+PY=/usr/bin/python3
+TOOL="$HERE/surface_tool.py"
+
+# the checker, independent of the plugin
+g++ -O2 -std=c++17 -o "$WORK/check_surface" "$HERE/check_surface.cpp" -lgmp -lmpfr
+
+# occt-draw loads its plugins as libTK*.so, which only the -dev packages
+# provide: link them to the runtime libraries in a private directory
+for f in /usr/lib/x86_64-linux-gnu/libTK*.so.7; do ln -sf "$f" "$WORK/lib/$(basename "$f" .7)"; done
+
+CGAL_DATA=/usr/share/doc/libcgal-dev/data.tar.gz
+OCC=/usr/share/opencascade/data
+GD=/usr/share/doc/gmsh-doc
+OSCAD=/usr/share/openscad/examples
+
+# name | kind | source | note
+# kinds: cgal (an OFF of CGAL's test data, as is), scad (openscad -o),
+# occt (DRAWEXE: restore/igesbrep/testreadstep, incmesh with a deflection of
+# 1/200 of the bounding box diagonal and 20 degrees, writestl), gmsh (gmsh -2,
+# 1 thread, its default sizes, STL), stl (a bundled STL, as is)
+CANDIDATES="
+3torus|cgal|data/meshes/3torus.off|coarse genus-3 torus
+double-torus-example|cgal|data/meshes/double-torus-example.off|genus-2 torus
+eight|cgal|data/meshes/eight.off|figure eight (genus 2)
+anchor|cgal|data/meshes/anchor.off|CAD anchor
+fandisk|cgal|data/meshes/fandisk.off|CAD fan disk
+joint|cgal|data/meshes/joint.off|CAD joint
+couplingdown|cgal|data/meshes/couplingdown.off|CAD coupling
+blade|cgal|data/meshes/blade.off|scanned turbine blade
+elephant|cgal|data/meshes/elephant.off|organic
+knot1|cgal|data/meshes/knot1.off|trefoil knot
+rotor|cgal|data/meshes/rotor.off|CAD rotor
+pinion|cgal|data/meshes/pinion.off|CAD pinion gear
+spool|cgal|data/meshes/spool.off|CAD spool
+mech-holes-shark|cgal|data/meshes/mech-holes-shark.off|CAD part with holes
+femur|cgal|data/meshes/femur.off|scanned bone
+mushroom|cgal|data/meshes/mushroom.off|organic
+cow|cgal|data/meshes/cow.off|organic
+handle|cgal|data/meshes/handle.off|handle (genus 1)
+elk|cgal|data/meshes/elk.off|genus-1 sculpture
+head|cgal|data/meshes/head.off|scanned head
+dragknob|cgal|data/meshes/dragknob.off|CAD knob
+part|cgal|data/meshes/part.off|CAD part
+cactus|cgal|data/meshes/cactus.off|organic
+bones|cgal|data/meshes/bones.off|scanned bones
+turbine|cgal|data/meshes/turbine.off|CAD turbine
+cheese|cgal|data/meshes/cheese.off|block with many holes
+hand|cgal|data/meshes/hand.off|scanned hand
+oblong|cgal|data/meshes/oblong.off|oblong blob
+triceratops|cgal|data/meshes/triceratops.off|organic
+cylinder|cgal|data/meshes/cylinder.off|long-triangle cylinder
+scad-example001|scad|$OSCAD/Old/example001.scad|sphere minus three cylinders
+scad-example002|scad|$OSCAD/Old/example002.scad|CSG block
+scad-example003|scad|$OSCAD/Old/example003.scad|CSG cross
+scad-example005|scad|$OSCAD/Old/example005.scad|cylinders and cone
+scad-example024|scad|$OSCAD/Old/example024.scad|Menger sponge
+scad-CSG|scad|$OSCAD/Basics/CSG.scad|CSG union/difference/intersection
+scad-rotate_extrude|scad|$OSCAD/Basics/rotate_extrude.scad|rotate_extrude
+occt-bottle|occt|$OCC/occ/bottle.brep|OCCT tutorial bottle (fillets, thread)
+occt-CrankArm|occt|$OCC/occ/CrankArm.brep|crank arm
+occt-Pump_Nut|occt|$OCC/occ/Pump_Nut.brep|pump nut
+occt-Pump_TopCover|occt|$OCC/occ/Pump_TopCover.brep|pump top cover
+occt-Motor-c|occt|$OCC/occ/Motor-c.brep|motor casing
+occt-Axis_of_bearing|occt|$OCC/occ/Axis_of_bearing.brep|bearing axis (cylinders)
+occt-Top|occt|$OCC/occ/Top.brep|top
+occt-Bottom|occt|$OCC/occ/Bottom.brep|bottom
+occt-screw|occt|$OCC/step/screw.step|screw (STEP)
+occt-linkrods|occt|$OCC/step/linkrods.step|link rods (STEP)
+occt-bearing|occt|$OCC/iges/bearing.iges|bearing (IGES)
+gmsh-component8|gmsh|$GD/doc/gmsh/demos/boolean/component8.step.gz|STEP component
+gmsh-as1-tu-203|gmsh|$GD/doc/gmsh/demos/boolean/as1-tu-203.stp.gz|STEP assembly
+gmsh-fillet|gmsh|$GD/doc/gmsh/demos/boolean/fillet.geo|OCC fillet demo
+gmsh-fillet2|gmsh|$GD/doc/gmsh/demos/boolean/fillet2.geo|OCC fillet demo
+gmsh-chamfer|gmsh|$GD/doc/gmsh/demos/boolean/chamfer.geo|OCC chamfer demo
+gmsh-pipe|gmsh|$GD/doc/gmsh/demos/boolean/pipe.geo|OCC pipe sweep
+gmsh-twist|gmsh|$GD/doc/gmsh/demos/boolean/twist.geo|OCC twisted extrusion
+gmsh-thrusections|gmsh|$GD/doc/gmsh/demos/boolean/thrusections.geo|OCC loft
+gmsh-boolean|gmsh|$GD/doc/gmsh/demos/boolean/boolean.geo|OCC boolean demo
+gmsh-lever|stl|$GD/converters/stl_to_cartesian/lever.stl.gz|lever STL
+gmsh-object|stl|$GD/doc/gmsh/demos/api/object.stl.gz|object STL of the API demo
+"
+
+tar xzf "$CGAL_DATA" -C "$WORK" data/meshes
+export LD_LIBRARY_PATH="$WORK/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+
+tessellate() {  # name kind source -> prints the raw file, or fails
+    local name="$1" kind="$2" src="$3" raw
+    case "$kind" in
+        cgal) raw="$WORK/$src" ;;
+        stl) raw="$WORK/raw/$name.stl"; gzip -dc "$src" > "$raw" ;;
+        scad)
+            raw="$WORK/raw/$name.stl"
+            (cd "$(dirname "$src")" && timeout 300 openscad -o "$raw" "$src") >"$WORK/raw/$name.log" 2>&1 ;;
+        occt)
+            raw="$WORK/raw/$name.stl"
+            local read
+            case "$src" in
+                *.brep) read="restore $src s" ;;
+                *.step|*.stp) read="testreadstep $src s" ;;
+                *.iges|*.igs) read="igesbrep $src s *" ;;
+            esac
+            cat > "$WORK/raw/$name.tcl" <<TCL
+pload MODELING DATAEXCHANGE
+$read
+set b [bounding s]
+set d [expr sqrt(pow([lindex \$b 3]-[lindex \$b 0],2)+pow([lindex \$b 4]-[lindex \$b 1],2)+pow([lindex \$b 5]-[lindex \$b 2],2))]
+incmesh s [expr \$d/200.0] -a 20
+writestl s $raw 0
+exit
+TCL
+            (cd "$WORK/raw" && timeout 300 occt-draw -b -f "$name.tcl" </dev/null) >"$WORK/raw/$name.log" 2>&1 ;;
+        gmsh)
+            raw="$WORK/raw/$name.stl"
+            local in="$src"
+            case "$src" in *.gz) in="$WORK/raw/$(basename "${src%.gz}")"; gzip -dc "$src" > "$in" ;; esac
+            (cd "$(dirname "$in")" && timeout 300 gmsh "$in" -2 -nt 1 -format stl -save_all -o "$raw") \
+                >"$WORK/raw/$name.log" 2>&1 ;;
+    esac
+    [ -s "$raw" ] && echo "$raw"
+}
+
+TSV="$OUT/corpus.tsv"
+printf 'name\tstatus\treason\tpoints\ttriangles\tvolume\tmin_triangle_angle\tshare_triangles_below_10\tkind\tsource\tnote\n' > "$TSV"
+good=0
+while IFS='|' read -r name kind src note; do
+    [ -z "$name" ] && continue
+    src="$(eval echo "$src")"
+    status=dirty reason="" points="" tris="" vol="" amin="" a10=""
+    off="$WORK/$name.off"
+    if raw="$(tessellate "$name" "$kind" "$src")" && [ -n "$raw" ] \
+        && $PY "$TOOL" normalize "$raw" "$off" >"$WORK/raw/$name.normalize.log" 2>&1; then
+        check="$("$WORK/check_surface" "$off")"
+        st="$($PY "$TOOL" stats "$off")"
+        read -r points tris vol amin a10 <<<"$($PY -c 'import json,sys; s=json.loads(sys.argv[1]); print(s["points"], s["triangles"], "%.9g" % s["volume"], "%.3f" % s["min_triangle_angle"], "%.4f" % s["share_triangles_below_10"])' "$st")"
+        reason="$($PY -c '
+import json, sys
+c = json.loads(sys.argv[1])
+r = []
+if c["boundary_edges"]: r.append("open: %d boundary edges" % c["boundary_edges"])
+if c["nonmanifold_edges"]: r.append("%d non-manifold edges" % c["nonmanifold_edges"])
+if c["misoriented_edges"]: r.append("%d inconsistently oriented edges" % c["misoriented_edges"])
+if not c["polygon_mesh"] and not r: r.append("non-manifold vertex")
+if c["self_intersecting_pairs"] > 0: r.append("self-intersecting: %d triangle pairs" % c["self_intersecting_pairs"])
+if c["volume"] <= 0 and not r: r.append("inside out or no volume (%g)" % c["volume"])
+print("; ".join(r))' "$check")"
+        if [ -z "$reason" ]; then
+            status=good; reason=ok; good=$((good + 1)); cp "$off" "$OUT/$name.off"
+        else
+            cp "$off" "$OUT/dirty/$name.off"
+        fi
+    else
+        reason="tessellation or reading failed (see .work/raw/$name.*log)"
+    fi
+    printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$name" "$status" "$reason" "$points" "$tris" "$vol" \
+        "$amin" "$a10" "$kind" "${src#$WORK/}" "$note" >> "$TSV"
+    printf 'fetch: %-24s %-5s %s\n' "$name" "$status" "$reason"
+done <<<"$CANDIDATES"
+echo "fetch: $good good surfaces in $OUT (table: $TSV)"
