@@ -8,6 +8,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 #include <unordered_map>
 
@@ -144,8 +145,8 @@ struct Box
   }
 };
 
-// Whether the surface of part `cell` crosses itself where the cut by plane
-// `planeId` changed it: the faces of the part (surface triangles and its
+// Whether the surface of part `cell` crosses itself where a cut changed it
+// (within `cutBox`, the box of the new interface): the faces of the part (surface triangles and its
 // interface regions, triangulated) that reach into the box of the new
 // interface, checked with CGAL's exact predicates. Farther faces are as they
 // were, already checked (with the input or the parent part). Checking all
@@ -154,30 +155,57 @@ struct Box
 // slower (0.97 s to 5.3 s); the box and the least refined triangulation
 // (any covers the flat region alike) leave it under twice as slow. A region
 // that cannot be triangulated counts as crossing.
-bool partCrossesItself(const SurfaceComplex& c, int cell, int planeId)
+bool partCrossesItself(const SurfaceComplex& c, int cell, const Box& cutBox)
 {
-  Box cutBox;
   std::vector<const InterfaceRegion*> regions;
   for (const InterfaceRegion& region : c.interfaces)
   {
     if (region.pair[0] == cell || region.pair[1] == cell)
     {
       regions.push_back(&region);
-      for (const DirectedEdge& e : region.edges)
-      {
-        if (region.planeId == planeId)
-        {
-          cutBox.add(c.points[e[0]]);
-        }
-      }
     }
   }
-  if (!(cutBox.lo[0] <= cutBox.hi[0]))
+  // A region reaching into the box may have been split by the cut and is
+  // triangulated anew as a whole, so everything reaching into its box is
+  // near too (missed at first: a piece of example005's first interface
+  // crossed a surface triangle far from the cut that split it, K = 10).
+  std::vector<char> regionNear(regions.size(), 0);
+  Box nearBox = cutBox;
+  std::vector<std::vector<Index>> regionPointLists(regions.size());
+  for (std::size_t r = 0; r < regions.size(); ++r)
   {
-    return false; // no interface: the plane passed between bodies of the part
+    regionPointLists[r] = regionPoints(*regions[r]);
+    Box box;
+    for (Index v : regionPointLists[r])
+    {
+      box.add(c.points[v]);
+    }
+    if (box.overlaps(cutBox))
+    {
+      regionNear[r] = 1;
+      nearBox.add(box.lo);
+      nearBox.add(box.hi);
+    }
   }
-  // the faces away from the box only close the surface: any triangulation
-  // of their regions will do, the least refined one
+  // A flat region is a section of the part by its plane, which no face of
+  // the part crosses; only a region bent through points left off its plane
+  // (snapped vertices of the input) can cross one. None near: nothing to do.
+  bool bent = false;
+  const double roundOff = 1e-10 * norm(nearBox.hi - nearBox.lo);
+  for (std::size_t r = 0; r < regions.size() && !bent; ++r)
+  {
+    const CuttingPlane& plane = c.planes[regions[r]->planeId];
+    for (std::size_t k = 0; k < regionPointLists[r].size() && regionNear[r] && !bent; ++k)
+    {
+      bent = std::fabs(dot(plane.normal, c.points[regionPointLists[r][k]] - plane.origin)) > roundOff;
+    }
+  }
+  if (!bent)
+  {
+    return false;
+  }
+  // the faces away from it only close the surface: any triangulation of
+  // their regions will do, the least refined one
   InterfaceTriangulationOptions cover;
   cover.minimumAngleDegrees = 1.0;
   cover.maximumEdgeLength = std::numeric_limits<double>::max();
@@ -202,24 +230,19 @@ bool partCrossesItself(const SurfaceComplex& c, int cell, int planeId)
       {
         box.add(c.points[v]);
       }
-      if (box.overlaps(cutBox))
+      if (box.overlaps(nearBox))
       {
         near.push_back(static_cast<Index>(part.triangles.size()));
       }
       part.triangles.push_back({ localPoint(t[0]), localPoint(t[1]), localPoint(t[2]) });
     }
   }
-  for (const InterfaceRegion* region : regions)
+  for (std::size_t k = 0; k < regions.size(); ++k)
   {
-    const std::vector<Index> points = regionPoints(*region);
-    Box box;
-    for (Index v : points)
-    {
-      box.add(c.points[v]);
-    }
-    const bool isNear = box.overlaps(cutBox);
+    const InterfaceRegion& region = *regions[k];
+    const std::vector<Index>& points = regionPointLists[k];
     const InterfaceTriangulationResult r = triangulateInterface(
-      planarRegionOf(c, *region, points), isNear ? InterfaceTriangulationOptions() : cover);
+      planarRegionOf(c, region, points), regionNear[k] ? InterfaceTriangulationOptions() : cover);
     if (!r.ok)
     {
       return true;
@@ -234,10 +257,10 @@ bool partCrossesItself(const SurfaceComplex& c, int cell, int planeId)
       ids.push_back(static_cast<Index>(part.points.size()));
       part.points.push_back(p);
     }
-    const bool outward = region->pair[0] == cell;
+    const bool outward = region.pair[0] == cell;
     for (const Triangle& t : r.triangulation.triangles)
     {
-      if (isNear)
+      if (regionNear[k])
       {
         near.push_back(static_cast<Index>(part.triangles.size()));
       }
@@ -523,13 +546,49 @@ bool PartCut::soundParts(const Trial& trial) const
     return false;
   }
   if (!options.inputCheck.checkSelfIntersections ||
-    trial.complex.triangles.size() > options.inputCheck.selfIntersectionLimit ||
-    (trial.stats.snappedPoints == 0 && trial.stats.movedOntoPlane == 0))
+    trial.complex.triangles.size() > options.inputCheck.selfIntersectionLimit)
   {
     return true;
   }
-  return !partCrossesItself(trial.complex, below, planeId) &&
-    !partCrossesItself(trial.complex, above, planeId);
+  // The parts across the interfaces the cut split changed too: their side
+  // of a split region is triangulated anew (example005 at K = 10: a piece of
+  // the first interface crossed a surface triangle of the part on its other
+  // side, never checked).
+  Box cutBox;
+  std::set<int> parts{ below, above };
+  for (const InterfaceRegion& region : trial.complex.interfaces)
+  {
+    if (region.planeId == planeId)
+    {
+      for (const DirectedEdge& e : region.edges)
+      {
+        cutBox.add(trial.complex.points[e[0]]);
+      }
+    }
+  }
+  if (!(cutBox.lo[0] <= cutBox.hi[0]))
+  {
+    return true; // no interface: the plane passed between bodies of the part
+  }
+  for (const InterfaceRegion& region : trial.complex.interfaces)
+  {
+    for (int k = 0; k < 2; ++k)
+    {
+      const int other = region.pair[1 - k];
+      if ((region.pair[k] == below || region.pair[k] == above) && other >= 0)
+      {
+        parts.insert(other);
+      }
+    }
+  }
+  for (int part : parts)
+  {
+    if (partCrossesItself(trial.complex, part, cutBox))
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 // A cut whose parts cross themselves is never shipped. Seen only where
