@@ -455,6 +455,23 @@ TEST(VolumeBalancedDecomposition, CoarseCadNeverCrossesItself)
   }
 }
 
+// The OpenSCAD example005 at $fn = 12 (Data/regression/openscad_example005.off):
+// at K = 10 a later cut split a piece of the first interface that snapped
+// vertices had left bent, and the piece, triangulated anew, crossed a
+// surface triangle of the part on its other side. The parts across the
+// split interfaces are checked too.
+TEST(VolumeBalancedDecomposition, CadPartAcrossASplitInterfaceNeverCrossesItself)
+{
+  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/openscad_example005.off");
+  ASSERT_TRUE(file.ok) << file.error;
+  DecompositionOptions options;
+  options.numberOfSubdomains = 10;
+  const DecompositionResult r = decomposeVolumeBalanced(file.data.surface, options);
+  ASSERT_TRUE(r.ok) << r.error;
+  expectClosedSubdomains(r.complex, "example005");
+  EXPECT_EQ(crossingSubdomains(r), 0) << "example005 K=10";
+}
+
 // PlaneClearance: points on the plane (up to round-off) do not count, a
 // plane a hair off a row of points scores about 0, and within a window the
 // clearest offset is the one through the grid plane, not a hair off it.
