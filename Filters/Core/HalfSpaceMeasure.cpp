@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 namespace ptm
 {
@@ -29,6 +30,127 @@ std::vector<Index> cellPoints(const SurfaceComplex& c, int cell)
   std::sort(points.begin(), points.end());
   points.erase(std::unique(points.begin(), points.end()), points.end());
   return points;
+}
+
+PlaneClearance::PlaneClearance(const SurfaceComplex& c, int cell, const Vec3& normal)
+{
+  std::map<Index, double> shortest;
+  auto touch = [&](Index a, Index b) {
+    const double length = norm(c.points[a] - c.points[b]);
+    for (Index v : { a, b })
+    {
+      auto [it, inserted] = shortest.emplace(v, length);
+      it->second = inserted ? length : std::min(it->second, length);
+    }
+  };
+  for (std::size_t i = 0; i < c.triangles.size(); ++i)
+  {
+    if (c.trianglePairs[i][0] == cell || c.trianglePairs[i][1] == cell)
+    {
+      const Triangle& t = c.triangles[i];
+      touch(t[0], t[1]);
+      touch(t[1], t[2]);
+      touch(t[2], t[0]);
+    }
+  }
+  for (const auto& region : c.interfaces)
+  {
+    if (region.pair[0] == cell || region.pair[1] == cell)
+    {
+      for (const auto& e : region.edges)
+      {
+        touch(e[0], e[1]);
+      }
+    }
+  }
+  for (const auto& [v, h] : shortest)
+  {
+    if (h > 0)
+    {
+      this->Points.emplace_back(dot(normal, c.points[v]), h);
+      this->LargestEdge = std::max(this->LargestEdge, h);
+    }
+  }
+  std::sort(this->Points.begin(), this->Points.end());
+}
+
+namespace
+{
+// A point this close to the plane (relative to its edges) lies on it up to
+// round-off: the contour runs through it, as through the grid points of a
+// box cut on its grid lines, which leaves no short segment at all.
+constexpr double kOnPlane = 1e-9;
+} // namespace
+
+double PlaneClearance::at(double offset) const
+{
+  // only points within (best so far) x (largest edge) can lower the minimum:
+  // walk outward from the offset in both directions
+  double best = std::numeric_limits<double>::infinity();
+  const auto start = std::lower_bound(this->Points.begin(), this->Points.end(),
+    std::make_pair(offset, -std::numeric_limits<double>::infinity()));
+  for (auto it = start; it != this->Points.end(); ++it)
+  {
+    const double d = it->first - offset;
+    if (d >= best * this->LargestEdge)
+    {
+      break;
+    }
+    best = d <= kOnPlane * it->second ? best : std::min(best, d / it->second);
+  }
+  for (auto it = start; it != this->Points.begin();)
+  {
+    --it;
+    const double d = offset - it->first;
+    if (d >= best * this->LargestEdge)
+    {
+      break;
+    }
+    best = d <= kOnPlane * it->second ? best : std::min(best, d / it->second);
+  }
+  return best;
+}
+
+double PlaneClearance::clearestOffset(double low, double high, double preferred, double enough) const
+{
+  // the clearance is the lower envelope of cones |n.p - o| / h(p); its
+  // maxima lie at the ends of the interval or where the rising cone of one
+  // point meets the falling cone of a point above it, so those are the
+  // candidates (neighbours in projection order, enough in practice)
+  std::vector<double> candidates{ low, high, std::clamp(preferred, low, high) };
+  const auto first = std::lower_bound(this->Points.begin(), this->Points.end(),
+    std::make_pair(low - this->LargestEdge, -std::numeric_limits<double>::infinity()));
+  for (auto it = first; it != this->Points.end() && std::next(it) != this->Points.end(); ++it)
+  {
+    if (it->first > high + this->LargestEdge)
+    {
+      break;
+    }
+    const auto& [pa, ha] = *it;
+    const auto& [pb, hb] = *std::next(it);
+    const double meet = (pa * hb + pb * ha) / (ha + hb);
+    if (meet > low && meet < high)
+    {
+      candidates.push_back(meet);
+    }
+    if (pa > low && pa < high)
+    {
+      candidates.push_back(pa); // through the point (and any others on the same plane)
+    }
+  }
+  double bestOffset = std::clamp(preferred, low, high);
+  double bestScore = std::min(enough, this->at(bestOffset));
+  for (double o : candidates)
+  {
+    const double score = std::min(enough, this->at(o));
+    const bool nearer = std::fabs(o - preferred) < std::fabs(bestOffset - preferred);
+    if (score > bestScore || (score == bestScore && nearer))
+    {
+      bestScore = score;
+      bestOffset = o;
+    }
+  }
+  return bestOffset;
 }
 
 HalfSpaceMeasure::HalfSpaceMeasure(

@@ -58,6 +58,28 @@ private:
   double MaxOffset = 0;
 };
 
+// How far the plane n.x = offset keeps from the points of part `cell`: the
+// smallest |n.p - offset| / h(p) over its points p, h(p) the shortest edge of
+// the part at p (surface triangle edges and interface boundary edges), over
+// the points not on the plane (within round-off, 1e-9 h(p)): a plane a
+// hair off a point scores about 0; one a tenth of the edges away, 0.1. The
+// contour of a plane at clearance s crosses the edges at p at least s h(p)
+// from p, so it has no segment much shorter than s times the local edge
+// (long thin triangles crossed near their sharp corner aside).
+class PlaneClearance
+{
+public:
+  PlaneClearance(const SurfaceComplex& complex, int cell, const Vec3& normal);
+  double at(double offset) const;
+  // The offset in [low, high] of largest clearance, clearances above `enough`
+  // counting as `enough`; of equal ones the nearest to `preferred`.
+  double clearestOffset(double low, double high, double preferred, double enough) const;
+
+private:
+  std::vector<std::pair<double, double>> Points; // (n.p, h(p)), sorted
+  double LargestEdge = 0;
+};
+
 // Every point of the part (surface and interface boundary points), sorted.
 std::vector<Index> cellPoints(const SurfaceComplex& complex, int cell);
 } // namespace ptm

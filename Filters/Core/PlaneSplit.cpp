@@ -19,6 +19,7 @@ struct VertexSide
   double edgeLengthSum = 0;
   int regionEdgeCount = 0;
   int side = 0; // -1 below, 0 on the plane, +1 above
+  bool snapped = false; // off the plane but treated as on it
 };
 
 struct PairHash
@@ -127,6 +128,46 @@ void insertEdgePoints(SurfaceComplex& c, int below, int above,
     region.edges.swap(edges);
   }
 }
+
+// Whether a boundary of an interface of `below` or `above` touches itself: a
+// point that two of its edges leave. Lists such points in `stats` (sorted).
+bool findPinchedPoints(const SurfaceComplex& c, int below, int above,
+  const std::unordered_map<Index, VertexSide>& vertices, int planeId, PlaneSplitStats& stats,
+  std::string& error)
+{
+  std::set<Index> pinched;
+  for (const InterfaceRegion& region : c.interfaces)
+  {
+    if (region.pair[0] != below && region.pair[0] != above && region.pair[1] != below &&
+      region.pair[1] != above)
+    {
+      continue;
+    }
+    std::map<Index, int> leaving;
+    for (const DirectedEdge& e : region.edges)
+    {
+      if (++leaving[e[0]] == 2)
+      {
+        pinched.insert(e[0]);
+      }
+    }
+  }
+  if (pinched.empty())
+  {
+    return false;
+  }
+  stats.pinchedPoints.assign(pinched.begin(), pinched.end());
+  for (Index v : pinched)
+  {
+    auto it = vertices.find(v);
+    stats.pinchedOnPlane = stats.pinchedOnPlane || it == vertices.end() || !it->second.snapped;
+  }
+  std::ostringstream msg;
+  msg << "cutting plane " << planeId << " pinched a part at point " << *pinched.begin()
+      << " (an interface boundary touches itself there)";
+  error = msg.str();
+  return true;
+}
 } // namespace
 
 bool splitCell(SurfaceComplex& c, int cell, const Vec3& n, double offset, int planeId, int below,
@@ -187,9 +228,11 @@ bool splitCell(SurfaceComplex& c, int cell, const Vec3& n, double offset, int pl
     {
       info.side = 0;
     }
-    else if (std::fabs(info.distance) <= options.snapFraction * info.shortestEdge)
+    else if (std::fabs(info.distance) <= options.snapFraction * info.shortestEdge &&
+      !std::binary_search(options.keepOffPlane.begin(), options.keepOffPlane.end(), v))
     {
       info.side = 0;
+      info.snapped = true;
       ++stats.snappedPoints;
     }
     else
@@ -294,6 +337,8 @@ bool splitCell(SurfaceComplex& c, int cell, const Vec3& n, double offset, int pl
     }
     const double dlo = vertices.at(lo).distance, dhi = vertices.at(hi).distance;
     const double t = dlo / (dlo - dhi);
+    stats.crossingsWithin10Percent += std::min(t, 1.0 - t) < 0.1 ? 1 : 0;
+    stats.crossingsWithin1Percent += std::min(t, 1.0 - t) < 0.01 ? 1 : 0;
     c.points.push_back(c.points[lo] + t * (c.points[hi] - c.points[lo]));
     const Index id = static_cast<Index>(c.points.size() - 1);
     crossings[{ lo, hi }] = id;
@@ -642,6 +687,6 @@ bool splitCell(SurfaceComplex& c, int cell, const Vec3& n, double offset, int pl
   {
     c.interfaces.push_back(std::move(cut));
   }
-  return true;
+  return !findPinchedPoints(c, below, above, vertices, planeId, stats, error);
 }
 } // namespace ptm

@@ -28,6 +28,7 @@
 #include "SurfaceComplex.h"
 
 #include <string>
+#include <vector>
 
 namespace ptm
 {
@@ -37,6 +38,9 @@ struct PlaneSplitOptions
   // bracket), 0.1 tilted interfaces into nearly parallel faces (2 self-
   // intersections) and 0 left near-degenerate slivers (7); 0.05 left none.
   double snapFraction = 0.05;
+  // Vertices never snapped (sorted): where snapping one made a part's surface
+  // touch itself (see pinchedPoints), the caller splits again without it.
+  std::vector<Index> keepOffPlane;
 };
 
 struct PlaneSplitStats
@@ -45,8 +49,21 @@ struct PlaneSplitStats
   std::size_t snappedPoints = 0; // vertices off the plane treated as on it
   std::size_t movedOntoPlane = 0; // ... of them moved onto it along one of their edges
   std::size_t chordPoints = 0;   // new points on lines where two planes meet
+  // edges split within 10 % / 1 % of their length from an end: the contour
+  // passes that close to a vertex, leaving a short segment and thin pieces
+  std::size_t crossingsWithin10Percent = 0;
+  std::size_t crossingsWithin1Percent = 0;
   std::size_t interfaceEdges = 0; // boundary edges of the new interface (0: the plane
                                   // passes between bodies of the part, no interface)
+  // Points where a boundary of an interface of the two new parts touches
+  // itself (two edges leave the point): the part's surface is pinched there,
+  // its two sheets meet at one point and CGAL counts that as a self-
+  // intersection. Seen where a plane passes near a saddle vertex of a
+  // coarse surface (the 19-vertex triple torus of CGAL's data at K = 4) and
+  // the vertex was snapped onto it: the two branches of the contour then
+  // cross at the vertex. The split fails with these points listed.
+  std::vector<Index> pinchedPoints;
+  bool pinchedOnPlane = false; // one of them lies exactly on the plane (not snapped)
 };
 
 // Returns false with a message if the part's faces do not form a closed

@@ -25,6 +25,12 @@ struct Enough
 
 SelfIntersectionReport checkSelfIntersection(const TriangleSurface& s, std::size_t limit)
 {
+  return checkSelfIntersection(s, std::vector<Index>(), limit);
+}
+
+SelfIntersectionReport checkSelfIntersection(
+  const TriangleSurface& s, const std::vector<Index>& among, std::size_t limit)
+{
   SelfIntersectionReport report;
   std::vector<K::Point_3> points;
   points.reserve(s.points.size());
@@ -76,7 +82,20 @@ SelfIntersectionReport checkSelfIntersection(const TriangleSurface& s, std::size
   };
   try
   {
-    PMP::self_intersections(mesh, Collector{ &pairs, std::max<std::size_t>(limit, 1) });
+    if (among.empty())
+    {
+      PMP::self_intersections(mesh, Collector{ &pairs, std::max<std::size_t>(limit, 1) });
+    }
+    else
+    {
+      std::vector<Mesh::Face_index> range;
+      range.reserve(among.size());
+      for (Index f : among)
+      {
+        range.push_back(Mesh::Face_index(static_cast<Mesh::size_type>(f)));
+      }
+      PMP::self_intersections(range, mesh, Collector{ &pairs, std::max<std::size_t>(limit, 1) });
+    }
   }
   catch (const Enough&)
   {

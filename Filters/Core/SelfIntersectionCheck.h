@@ -6,6 +6,7 @@
 #include "TriangleSurface.h"
 
 #include <string>
+#include <vector>
 
 namespace ptm
 {
@@ -20,5 +21,11 @@ struct SelfIntersectionReport
 };
 
 SelfIntersectionReport checkSelfIntersection(const TriangleSurface& surface, std::size_t limit = 1);
+
+// Only pairs of the triangles listed in `among` (indices into
+// surface.triangles): where the rest is known not to cross itself and the
+// listed ones are all that may touch what changed.
+SelfIntersectionReport checkSelfIntersection(
+  const TriangleSurface& surface, const std::vector<Index>& among, std::size_t limit = 1);
 } // namespace ptm
 #endif

@@ -1,13 +1,16 @@
 #include "VolumeBalancedDecomposition.h"
 
 #include "InterfaceTriangulation.h"
+#include "SelfIntersectionCheck.h"
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
+#include <unordered_map>
 
 namespace ptm
 {
@@ -78,6 +81,691 @@ std::vector<double> measureSubdomains(const SurfaceComplex& c, BalanceCriterion 
   }
   return m;
 }
+
+// Mean length of the triangles' edges (an edge of two triangles counted twice).
+double meanEdgeLength(const TriangleSurface& surface)
+{
+  double edgeSum = 0;
+  for (const auto& t : surface.triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      edgeSum += norm(surface.points[t[(k + 1) % 3]] - surface.points[t[k]]);
+    }
+  }
+  return edgeSum / (3.0 * static_cast<double>(surface.triangles.size()));
+}
+
+// Why the options cannot be used, or empty.
+std::string optionError(const DecompositionOptions& options)
+{
+  if (options.numberOfSubdomains < 1)
+  {
+    return "the number of subdomains must be at least 1";
+  }
+  if (!(options.balanceTolerance > 0 && options.balanceTolerance < 1))
+  {
+    return "the balance tolerance must lie strictly between 0 and 1";
+  }
+  if (!(options.snapFraction >= 0 && options.snapFraction < 0.5))
+  {
+    return "the snap fraction must lie in [0, 0.5)";
+  }
+  if (!(options.alignmentAngleDegrees >= 0 && options.alignmentAngleDegrees <= 45))
+  {
+    return "the plane alignment angle must lie in [0, 45] degrees";
+  }
+  return std::string();
+}
+
+// Axis-aligned box of some points, for a cheap overlap test.
+struct Box
+{
+  Vec3 lo{ std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+    std::numeric_limits<double>::infinity() };
+  Vec3 hi{ -lo[0], -lo[1], -lo[2] };
+  void add(const Vec3& p)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = std::min(lo[k], p[k]);
+      hi[k] = std::max(hi[k], p[k]);
+    }
+  }
+  bool overlaps(const Box& o) const
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      if (hi[k] < o.lo[k] || o.hi[k] < lo[k])
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+};
+
+// Whether the surface of part `cell` crosses itself where a cut changed it
+// (within `cutBox`, the box of the new interface): the faces of the part (surface triangles and its
+// interface regions, triangulated) that reach into the box of the new
+// interface, checked with CGAL's exact predicates. Farther faces are as they
+// were, already checked (with the input or the parent part). Checking all
+// faces, with the regions refined as the interface triangulator does, made
+// the decomposition of CGAL's 11,520-triangle knot2 at K = 16 five times
+// slower (0.97 s to 5.3 s); the box and the least refined triangulation
+// (any covers the flat region alike) leave it under twice as slow. A region
+// that cannot be triangulated counts as crossing.
+bool partCrossesItself(const SurfaceComplex& c, int cell, const Box& cutBox)
+{
+  std::vector<const InterfaceRegion*> regions;
+  for (const InterfaceRegion& region : c.interfaces)
+  {
+    if (region.pair[0] == cell || region.pair[1] == cell)
+    {
+      regions.push_back(&region);
+    }
+  }
+  // A region reaching into the box may have been split by the cut and is
+  // triangulated anew as a whole, so everything reaching into its box is
+  // near too (missed at first: a piece of example005's first interface
+  // crossed a surface triangle far from the cut that split it, K = 10).
+  std::vector<char> regionNear(regions.size(), 0);
+  Box nearBox = cutBox;
+  std::vector<std::vector<Index>> regionPointLists(regions.size());
+  for (std::size_t r = 0; r < regions.size(); ++r)
+  {
+    regionPointLists[r] = regionPoints(*regions[r]);
+    Box box;
+    for (Index v : regionPointLists[r])
+    {
+      box.add(c.points[v]);
+    }
+    if (box.overlaps(cutBox))
+    {
+      regionNear[r] = 1;
+      nearBox.add(box.lo);
+      nearBox.add(box.hi);
+    }
+  }
+  // A flat region is a section of the part by its plane, which no face of
+  // the part crosses; only a region bent through points left off its plane
+  // (snapped vertices of the input) can cross one. None near: nothing to do.
+  bool bent = false;
+  const double roundOff = 1e-10 * norm(nearBox.hi - nearBox.lo);
+  for (std::size_t r = 0; r < regions.size() && !bent; ++r)
+  {
+    const CuttingPlane& plane = c.planes[regions[r]->planeId];
+    for (std::size_t k = 0; k < regionPointLists[r].size() && regionNear[r] && !bent; ++k)
+    {
+      bent = std::fabs(dot(plane.normal, c.points[regionPointLists[r][k]] - plane.origin)) > roundOff;
+    }
+  }
+  if (!bent)
+  {
+    return false;
+  }
+  // the faces away from it only close the surface: any triangulation of
+  // their regions will do, the least refined one
+  InterfaceTriangulationOptions cover;
+  cover.minimumAngleDegrees = 1.0;
+  cover.maximumEdgeLength = std::numeric_limits<double>::max();
+  TriangleSurface part;
+  std::vector<Index> near;
+  std::unordered_map<Index, Index> local;
+  auto localPoint = [&](Index v) {
+    auto [it, inserted] = local.emplace(v, static_cast<Index>(part.points.size()));
+    if (inserted)
+    {
+      part.points.push_back(c.points[v]);
+    }
+    return it->second;
+  };
+  for (std::size_t i = 0; i < c.triangles.size(); ++i)
+  {
+    if (c.trianglePairs[i][0] == cell && c.trianglePairs[i][1] == -1)
+    {
+      const Triangle& t = c.triangles[i];
+      Box box;
+      for (Index v : t)
+      {
+        box.add(c.points[v]);
+      }
+      if (box.overlaps(nearBox))
+      {
+        near.push_back(static_cast<Index>(part.triangles.size()));
+      }
+      part.triangles.push_back({ localPoint(t[0]), localPoint(t[1]), localPoint(t[2]) });
+    }
+  }
+  for (std::size_t k = 0; k < regions.size(); ++k)
+  {
+    const InterfaceRegion& region = *regions[k];
+    const std::vector<Index>& points = regionPointLists[k];
+    const InterfaceTriangulationResult r = triangulateInterface(
+      planarRegionOf(c, region, points), regionNear[k] ? InterfaceTriangulationOptions() : cover);
+    if (!r.ok)
+    {
+      return true;
+    }
+    std::vector<Index> ids;
+    for (Index v : points)
+    {
+      ids.push_back(localPoint(v));
+    }
+    for (const Vec3& p : r.triangulation.newPoints)
+    {
+      ids.push_back(static_cast<Index>(part.points.size()));
+      part.points.push_back(p);
+    }
+    const bool outward = region.pair[0] == cell;
+    for (const Triangle& t : r.triangulation.triangles)
+    {
+      if (regionNear[k])
+      {
+        near.push_back(static_cast<Index>(part.triangles.size()));
+      }
+      part.triangles.push_back(
+        outward ? Triangle{ ids[t[0]], ids[t[1]], ids[t[2]] } : Triangle{ ids[t[0]], ids[t[2]], ids[t[1]] });
+    }
+  }
+  const SelfIntersectionReport report = checkSelfIntersection(part, near);
+  return !report.checked || report.intersects;
+}
+
+// Splits a copy of the complex by the plane n . x = at; `missing` is the
+// volume the part below lacks, `area` the cross-section (the rate at
+// which the volume changes with the offset).
+struct Trial
+{
+  bool ok = false;
+  SurfaceComplex complex;
+  PlaneSplitStats stats;
+  double missing = 0, area = 0;
+  double offset = 0; // of the split actually made (a pinch may move it a hair)
+  Vec3 normal{ 0, 0, 0 };
+  double error = std::numeric_limits<double>::infinity();
+};
+
+// Cuts `cell` so that the part below holds `fraction` of its measure. The
+// offset from the measure function is only a start: snapping vertices onto
+// the plane moves volume, so the split is tried on a copy, measured, and the
+// offset corrected (Newton with the cross-section area) until the part
+// below is within a quarter of the tolerance of one subdomain; if snapping
+// makes that impossible, it is halved step by step down to 0.001 (never 0:
+// a vertex a hair's breadth from the plane would leave a degenerate sliver).
+// Each trial splits a copy of the complex; only run() changes it, once.
+struct PartCut
+{
+  PartCut(SurfaceComplex& complex, const DecompositionOptions& options, DecompositionResult& result,
+    int cell, double fraction, int parts, int below, int above, double solveTolerance);
+  bool run(const Vec3& proposedNormal, std::string& error);
+
+  Trial tryCut(const Vec3& n, double at, double snap);
+  Trial clearestBalancedCut(const Vec3& n, Trial&& balanced, double& at);
+  Trial balancedCut(const Vec3& n, double& at, bool& tooThin);
+  bool interfacesValid(const Trial& trial) const;
+  bool soundParts(const Trial& trial) const;
+  Trial soundCutInstead(Trial&& unsound, const Vec3& proposed);
+  bool cutAlongEarlierLine(const NearlyContinuedLine& continued, const Vec3& normal,
+    const Vec3& proposedNormal, double bestOffset, Trial& best);
+
+  SurfaceComplex& c;
+  const DecompositionOptions& options;
+  DecompositionResult& result;
+  const int cell, parts, below, above;
+  const double fraction, solveTolerance;
+  const int planeId;
+  const bool volumeCriterion;
+  double target = 0;          // volume wanted below the plane
+  double allowed = 0;         // its error allowed: a quarter of the tolerance of one subdomain
+  Vec3 centroid{ 0, 0, 0 };   // of the part's points: each plane's origin is put nearest to it
+  std::string lastError;
+};
+
+PartCut::PartCut(SurfaceComplex& complex, const DecompositionOptions& options_,
+  DecompositionResult& result_, int cell_, double fraction_, int parts_, int below_, int above_,
+  double solveTolerance_)
+  : c(complex)
+  , options(options_)
+  , result(result_)
+  , cell(cell_)
+  , parts(parts_)
+  , below(below_)
+  , above(above_)
+  , fraction(fraction_)
+  , solveTolerance(solveTolerance_)
+  , planeId(static_cast<int>(complex.planes.size()))
+  , volumeCriterion(options_.criterion == BalanceCriterion::Volume)
+{
+  const double cellVolume = volumeCriterion ? labelVolume(c, cell) : 0.0;
+  target = fraction * cellVolume;
+  allowed = 0.25 * options.balanceTolerance * cellVolume / parts;
+  const std::vector<Index> points = cellPoints(c, cell);
+  for (Index p : points)
+  {
+    centroid = centroid + c.points[p];
+  }
+  centroid = (1.0 / std::max<double>(1.0, static_cast<double>(points.size()))) * centroid;
+}
+
+// A split that pinches a part (PlaneSplitStats::pinchedPoints) is tried
+// again without snapping the pinching vertices; one pinched at a vertex
+// exactly on the plane is tried again a hair off it (a thousandth of the
+// mean edge; the balance loops correct the offset and the clearance
+// search below moves it further). Never shipped pinched: on the triple
+// torus (19 vertices) such cuts made 1 to 2 of K subdomains self-
+// intersecting at K = 4, 6, 8, 9, 10, 11, 12, 16, 20, 24, 32, 48, 64.
+Trial PartCut::tryCut(const Vec3& n, double at, double snap)
+{
+  Trial trial;
+  PlaneSplitOptions splitOptions;
+  splitOptions.snapFraction = snap;
+  for (int attempt = 0; attempt < 8; ++attempt)
+  {
+    trial.complex = c;
+    trial.stats = PlaneSplitStats();
+    trial.offset = at;
+    trial.normal = n;
+    CuttingPlane plane;
+    plane.normal = n;
+    plane.origin = centroid - (dot(n, centroid) - at) * n;
+    plane.cutSubdomainCount = parts;
+    trial.complex.planes.push_back(plane);
+    splitOptions.snapFraction = snap;
+    if (splitCell(trial.complex, cell, n, at, planeId, below, above, splitOptions, trial.stats, lastError))
+    {
+      trial.ok = true;
+      break;
+    }
+    if (trial.stats.pinchedPoints.empty())
+    {
+      return trial;
+    }
+    if (trial.stats.pinchedOnPlane)
+    {
+      at += 1e-3 * result.inputMeanEdgeLength;
+    }
+    std::vector<Index>& keep = splitOptions.keepOffPlane;
+    keep.insert(keep.end(), trial.stats.pinchedPoints.begin(), trial.stats.pinchedPoints.end());
+    std::sort(keep.begin(), keep.end());
+    keep.erase(std::unique(keep.begin(), keep.end()), keep.end());
+  }
+  if (!trial.ok)
+  {
+    return trial;
+  }
+  trial.missing = volumeCriterion ? labelVolume(trial.complex, below) - target : 0.0;
+  trial.error = std::fabs(trial.missing);
+  trial.area = trial.stats.interfaceEdges == 0
+    ? 0.0
+    : std::fabs(dot(n, vectorArea(trial.complex.points, trial.complex.interfaces.back().edges)));
+  return trial;
+}
+
+// Within the balance budget, the offset that keeps the plane farthest
+// from the part's points (PlaneClearance): the balanced offset alone
+// lands on points of round coordinates on CAD parts (planes through
+// vertices, faces lying in the plane) and crosses thin triangles near
+// their corners, leaving contour segments of a hair's length and sliver
+// triangles for TetGen. The volume is linear in the offset near the
+// balanced one (slope: the cross-section area), so the offsets whose
+// error stays within a budget form an interval; the split at the clearest
+// offset in it is made and kept only if really balanced. The budget is
+// 0.8 of the allowed error over 1 + ln(parts): with parallel planes the
+// error of each slab is passed on to the rest, and the last slabs add up
+// 1/(K-1) + 1/(K-2) + ... of them, about ln K; at 0.8 of the allowed error
+// alone, the triple torus by 64 parallel planes reached an imbalance of
+// 0.0081 against the tolerance of 0.01.
+Trial PartCut::clearestBalancedCut(const Vec3& n, Trial&& balanced, double& at)
+{
+  const double budget = 0.8 * allowed / (1.0 + std::log(static_cast<double>(parts)));
+  const double low = at + std::min(0.0, (-budget - balanced.missing) / balanced.area);
+  const double high = at + std::max(0.0, (budget - balanced.missing) / balanced.area);
+  const PlaneClearance clearance(c, cell, n);
+  const double clearest = clearance.clearestOffset(low, high, at, 0.5);
+  if (clearest == at || !(clearance.at(clearest) > clearance.at(at)))
+  {
+    return std::move(balanced);
+  }
+  Trial moved = tryCut(n, clearest, options.snapFraction);
+  if (moved.ok && moved.error <= allowed)
+  {
+    ++result.clearedPlanes;
+    at = moved.offset;
+    return moved;
+  }
+  return std::move(balanced);
+}
+
+// The balanced cut with normal n: the offset from the measure function,
+// corrected by Newton steps on the real split, with snapping reduced
+// when it keeps the balance out of reach. No trial at all if the
+// measure puts the plane outside the part (tooThin).
+Trial PartCut::balancedCut(const Vec3& n, double& at, bool& tooThin)
+{
+  const HalfSpaceMeasure measure(c, cell, n, options.criterion);
+  double offset = measure.offsetForFraction(fraction, solveTolerance);
+  Trial best;
+  at = offset;
+  tooThin = !(offset > measure.minimumOffset() && offset < measure.maximumOffset());
+  if (tooThin)
+  {
+    return best;
+  }
+  auto keepIfBetter = [&](Trial&& trial) {
+    if (trial.ok && trial.error < best.error)
+    {
+      at = trial.offset;
+      best = std::move(trial);
+    }
+  };
+  const double smallestSnap = std::min(options.snapFraction, 0.001);
+  for (double snap = options.snapFraction;; snap = std::max(0.5 * snap, smallestSnap))
+  {
+    for (int attempt = 0; attempt < 4; ++attempt)
+    {
+      Trial trial = tryCut(n, offset, snap);
+      const bool ok = trial.ok;
+      const double missing = trial.missing, area = trial.area;
+      offset = trial.ok ? trial.offset : offset;
+      keepIfBetter(std::move(trial));
+      if (!ok || best.error <= allowed || !(area > 0))
+      {
+        break;
+      }
+      offset -= missing / area;
+    }
+    if (best.error <= allowed || snap <= smallestSnap)
+    {
+      break;
+    }
+  }
+  // Safety net: if the measure function's start led nowhere (seen with a
+  // part of two bodies bounded by two nearly parallel interfaces, where
+  // the start fell in the gap between them), bisect on the real split.
+  if (volumeCriterion && best.error > allowed)
+  {
+    double lo = measure.minimumOffset(), hi = measure.maximumOffset();
+    for (int step = 0; step < 60 && best.error > allowed; ++step)
+    {
+      const double middle = 0.5 * (lo + hi);
+      Trial trial = tryCut(n, middle, options.snapFraction);
+      if (!trial.ok)
+      {
+        break;
+      }
+      (trial.missing < 0 ? lo : hi) = middle;
+      keepIfBetter(std::move(trial));
+    }
+  }
+  if (volumeCriterion && best.ok && best.error <= allowed && best.area > 0)
+  {
+    best = clearestBalancedCut(n, std::move(best), at);
+  }
+  return best;
+}
+
+// The interfaces of the two new parts must still be triangulable (closed
+// loops that neither cross nor touch); an aligned cut that is not falls
+// back to the one it improves on.
+bool PartCut::interfacesValid(const Trial& trial) const
+{
+  const SurfaceComplex& t = trial.complex;
+  for (const InterfaceRegion& region : t.interfaces)
+  {
+    if (region.pair[0] != below && region.pair[0] != above && region.pair[1] != below &&
+      region.pair[1] != above)
+    {
+      continue;
+    }
+    InterfaceTriangulationOptions check;
+    check.refine = false;
+    if (!triangulateInterface(planarRegionOf(t, region, regionPoints(region)), check).ok)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Neither new part may cross itself. Their interfaces must be triangulable
+// (closed loops that neither cross nor touch; a cheap check of the
+// boundaries, always made). And where the split snapped points onto the
+// plane without moving them (vertices of the input) or moved chord points,
+// the interfaces bend and may cross a face at a shallow angle (the triple
+// torus at K = 14, example002 at K = 12): then the parts near the new
+// interface are checked with CGAL, when the input is checked too and the
+// complex is within the input check's size limit. A split that snapped and
+// moved nothing has flat interfaces made of the plane's section of the part,
+// which no face of the part crosses; checking those too made CGAL's knot2
+// (11,520 triangles) at K = 64 take 4.5 s instead of 0.8 s.
+bool PartCut::soundParts(const Trial& trial) const
+{
+  if (!interfacesValid(trial))
+  {
+    return false;
+  }
+  if (!options.inputCheck.checkSelfIntersections ||
+    trial.complex.triangles.size() > options.inputCheck.selfIntersectionLimit)
+  {
+    return true;
+  }
+  // The parts across the interfaces the cut split changed too: their side
+  // of a split region is triangulated anew (example005 at K = 10: a piece of
+  // the first interface crossed a surface triangle of the part on its other
+  // side, never checked).
+  Box cutBox;
+  std::set<int> parts{ below, above };
+  for (const InterfaceRegion& region : trial.complex.interfaces)
+  {
+    if (region.planeId == planeId)
+    {
+      for (const DirectedEdge& e : region.edges)
+      {
+        cutBox.add(trial.complex.points[e[0]]);
+      }
+    }
+  }
+  if (!(cutBox.lo[0] <= cutBox.hi[0]))
+  {
+    return true; // no interface: the plane passed between bodies of the part
+  }
+  for (const InterfaceRegion& region : trial.complex.interfaces)
+  {
+    for (int k = 0; k < 2; ++k)
+    {
+      const int other = region.pair[1 - k];
+      if ((region.pair[k] == below || region.pair[k] == above) && other >= 0)
+      {
+        parts.insert(other);
+      }
+    }
+  }
+  for (int part : parts)
+  {
+    if (partCrossesItself(trial.complex, part, cutBox))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// A cut whose parts cross themselves is never shipped. Seen only where
+// vertices snapped onto the plane stay off it (vertices of the input do
+// not move), so the interface bends through them while a surface
+// triangle at a shallow angle to the plane passes under it: on the
+// triple torus at K = 14 and the OpenSCAD example002 at K = 12, whose
+// edges of about 10 units snap vertices up to 0.5 off the plane. First
+// the same plane without snapping, then the balanced cuts across the
+// proposed normal and the three axes, each with and without snapping;
+// if none is sound, the decomposition fails with a message.
+Trial PartCut::soundCutInstead(Trial&& unsound, const Vec3& proposed)
+{
+  ++result.rejectedCuts;
+  std::vector<std::pair<Vec3, bool>> tries{ { unsound.normal, false } };
+  for (const Vec3& n : { proposed, Vec3{ 1, 0, 0 }, Vec3{ 0, 1, 0 }, Vec3{ 0, 0, 1 } })
+  {
+    tries.push_back({ n, true });
+  }
+  for (const auto& [n, balance] : tries)
+  {
+    double offset = unsound.offset;
+    bool thin = false;
+    Trial trial = balance ? balancedCut(n, offset, thin) : Trial();
+    if (balance && trial.ok && soundParts(trial))
+    {
+      return trial;
+    }
+    if (balance && (thin || !trial.ok))
+    {
+      continue;
+    }
+    Trial plain = tryCut(n, offset, 0.0);
+    if (plain.ok && plain.error <= 2.0 * allowed && soundParts(plain))
+    {
+      return plain;
+    }
+  }
+  lastError = "no balanced cut of a part kept both halves free of self-intersections";
+  return Trial();
+}
+
+// Within half the surface's mean edge of the earlier line (and not on an
+// edge of the part), a parallel line would leave a thin strip of poor
+// triangles beside it: draw the very same line instead. A plane through
+// that line rarely balances the part at first, so it turns about the
+// line until it does (secant steps on the angle, at most the alignment
+// angle). Accepted within half the tolerance of one subdomain, so that
+// the errors of all levels of bisection still add up to less than the
+// tolerance.
+bool PartCut::cutAlongEarlierLine(const NearlyContinuedLine& continued, const Vec3& normal,
+  const Vec3& proposedNormal, double bestOffset, Trial& best)
+{
+  bool alongLine = false;
+  const double lineOffset = dot(normal, continued.linePoint);
+  const bool nearLine = volumeCriterion && continued.found && !continued.boundsPart && best.ok &&
+    std::fabs(bestOffset - lineOffset) < 0.5 * result.inputMeanEdgeLength;
+  // First the earlier plane itself, when it is also within the alignment
+  // angle of the proposed one: where several parts are cut by nearly one
+  // plane (the four quarters of a ball, say), turning each through one
+  // earlier line still leaves its other lines a hair apart; the same plane
+  // leaves none.
+  if (nearLine)
+  {
+    const CuttingPlane& earlier = c.planes[continued.planeId];
+    const double cosine = dot(earlier.normal, proposedNormal);
+    if (std::fabs(cosine) >= std::cos(options.alignmentAngleDegrees * kPi / 180.0))
+    {
+      const Vec3 n = cosine < 0 ? -1.0 * earlier.normal : earlier.normal;
+      Trial same = tryCut(n, dot(n, earlier.origin), options.snapFraction);
+      if (same.ok && same.error <= 2.0 * allowed && interfacesValid(same))
+      {
+        best = std::move(same);
+        alongLine = true;
+        ++result.alignedLines;
+      }
+    }
+  }
+  if (nearLine && !alongLine)
+  {
+    const Vec3 sideways = cross(continued.direction, normal);
+    const double largestTurn = options.alignmentAngleDegrees * kPi / 180.0;
+    Trial aligned;
+    double angle0 = 0, missing0 = 0, angle1 = 0, missing1 = 0;
+    for (int step = 0; step < 10 && aligned.error > allowed; ++step)
+    {
+      double angle = 0; // first the plane through the line as it is
+      if (step == 1)
+      {
+        angle = 1e-3; // then a small turn, for the secant
+      }
+      else if (step > 1)
+      {
+        if (missing1 == missing0)
+        {
+          break;
+        }
+        angle = angle1 - missing1 * (angle1 - angle0) / (missing1 - missing0);
+      }
+      if (!(std::fabs(angle) <= largestTurn))
+      {
+        break;
+      }
+      const Vec3 n = normalized(std::cos(angle) * normal + std::sin(angle) * sideways);
+      Trial trial = tryCut(n, dot(n, continued.linePoint), options.snapFraction);
+      if (!trial.ok)
+      {
+        break;
+      }
+      angle0 = angle1;
+      missing0 = missing1;
+      angle1 = angle;
+      missing1 = trial.missing;
+      if (trial.error < aligned.error)
+      {
+        aligned = std::move(trial);
+      }
+    }
+    if (aligned.ok && aligned.error <= 2.0 * allowed && interfacesValid(aligned))
+    {
+      best = std::move(aligned);
+      alongLine = true;
+      ++result.alignedLines;
+    }
+  }
+  return alongLine;
+}
+
+bool PartCut::run(const Vec3& proposedNormal, std::string& error)
+{
+  // A plane whose line on one of the part's interfaces nearly runs along
+  // a line already drawn there turns so that the two are parallel and
+  // never cross at a tiny angle (PlaneAlignment.h).
+  const NearlyContinuedLine continued =
+    findNearlyContinuedLine(c, cell, proposedNormal, options.alignmentAngleDegrees);
+  const Vec3 normal = continued.found ? continued.parallelNormal : proposedNormal;
+
+  double bestOffset = 0;
+  bool tooThin = false;
+  Trial best = balancedCut(normal, bestOffset, tooThin);
+  if (tooThin)
+  {
+    error = "the subdomains are too many for this surface: a part cannot be cut further";
+    return false;
+  }
+  const bool alongLine = cutAlongEarlierLine(continued, normal, proposedNormal, bestOffset, best);
+  if (continued.found && !alongLine && !(best.ok && interfacesValid(best)))
+  {
+    // the parallel cut is no good either: the plane the part asked for
+    Trial proposed = balancedCut(proposedNormal, bestOffset, tooThin);
+    if (proposed.ok)
+    {
+      best = std::move(proposed);
+    }
+  }
+  if (continued.found)
+  {
+    ++result.alignedNormals;
+  }
+  if (best.ok && !soundParts(best))
+  {
+    best = soundCutInstead(std::move(best), proposedNormal);
+  }
+  if (!best.ok)
+  {
+    // every split failed (with a reason), or none gave a finite volume
+    error = lastError.empty() ? "no cut of a part gave a finite volume" : lastError;
+    return false;
+  }
+  c = std::move(best.complex);
+  result.splitStats.splitTriangles += best.stats.splitTriangles;
+  result.splitStats.snappedPoints += best.stats.snappedPoints;
+  result.splitStats.chordPoints += best.stats.chordPoints;
+  result.splitStats.crossingsWithin10Percent += best.stats.crossingsWithin10Percent;
+  result.splitStats.crossingsWithin1Percent += best.stats.crossingsWithin1Percent;
+  return true;
+}
 } // namespace
 
 DecompositionResult decomposeVolumeBalanced(
@@ -85,24 +773,9 @@ DecompositionResult decomposeVolumeBalanced(
 {
   DecompositionResult result;
   const int K = options.numberOfSubdomains;
-  if (K < 1)
+  result.error = optionError(options);
+  if (!result.error.empty())
   {
-    result.error = "the number of subdomains must be at least 1";
-    return result;
-  }
-  if (!(options.balanceTolerance > 0 && options.balanceTolerance < 1))
-  {
-    result.error = "the balance tolerance must lie strictly between 0 and 1";
-    return result;
-  }
-  if (!(options.snapFraction >= 0 && options.snapFraction < 0.5))
-  {
-    result.error = "the snap fraction must lie in [0, 0.5)";
-    return result;
-  }
-  if (!(options.alignmentAngleDegrees >= 0 && options.alignmentAngleDegrees <= 45))
-  {
-    result.error = "the plane alignment angle must lie in [0, 45] degrees";
     return result;
   }
   PreparedSurface prepared = prepareInputSurface(input, options.inputCheck);
@@ -118,15 +791,7 @@ DecompositionResult decomposeVolumeBalanced(
   const std::vector<Index>& source = prepared.sourceOfTriangle;
   const double totalVolume = prepared.enclosedVolume;
   result.totalVolume = totalVolume;
-  double edgeSum = 0;
-  for (const auto& t : surface.triangles)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      edgeSum += norm(surface.points[t[(k + 1) % 3]] - surface.points[t[k]]);
-    }
-  }
-  result.inputMeanEdgeLength = edgeSum / (3.0 * static_cast<double>(surface.triangles.size()));
+  result.inputMeanEdgeLength = meanEdgeLength(surface);
 
   SurfaceComplex& c = result.complex;
   c.points = surface.points;
@@ -139,265 +804,12 @@ DecompositionResult decomposeVolumeBalanced(
   std::vector<int> leaves; // cell ids in subdomain order
   std::string error;
 
-  // Cuts `cell` so that the part below holds `fraction` of its measure. The
-  // offset from the measure function is only a start: snapping vertices onto
-  // the plane moves volume, so the split is tried on a copy, measured, and the
-  // offset corrected (Newton with the cross-section area) until the part
-  // below is within a quarter of the tolerance of one subdomain; if snapping
-  // makes that impossible, it is halved step by step down to 0.001 (never 0:
-  // a vertex a hair's breadth from the plane would leave a degenerate sliver).
   auto cut = [&](int cell, const Vec3& proposedNormal, double fraction, int parts, int& below,
                int& above) -> bool {
-    // A plane whose line on one of the part's interfaces nearly runs along
-    // a line already drawn there turns so that the two are parallel and
-    // never cross at a tiny angle (PlaneAlignment.h).
-    const NearlyContinuedLine continued =
-      findNearlyContinuedLine(c, cell, proposedNormal, options.alignmentAngleDegrees);
-    const Vec3 normal = continued.found ? continued.parallelNormal : proposedNormal;
-    const int planeId = static_cast<int>(c.planes.size());
-    const std::vector<Index> points = cellPoints(c, cell);
-    Vec3 centroid{ 0, 0, 0 };
-    for (Index p : points)
-    {
-      centroid = centroid + c.points[p];
-    }
-    centroid = (1.0 / std::max<double>(1.0, static_cast<double>(points.size()))) * centroid;
     below = nextCell++;
     above = nextCell++;
-    const bool volumeCriterion = options.criterion == BalanceCriterion::Volume;
-    const double cellVolume = volumeCriterion ? labelVolume(c, cell) : 0.0;
-    const double target = fraction * cellVolume;
-    const double allowed = 0.25 * options.balanceTolerance * cellVolume / parts;
-
-    std::string lastError;
-    // Splits a copy of the complex by the plane n . x = at; `missing` is the
-    // volume the part below lacks, `area` the cross-section (the rate at
-    // which the volume changes with the offset).
-    struct Trial
-    {
-      bool ok = false;
-      SurfaceComplex complex;
-      PlaneSplitStats stats;
-      double missing = 0, area = 0;
-      double error = std::numeric_limits<double>::infinity();
-    };
-    auto tryCut = [&](const Vec3& n, double at, double snap) {
-      Trial trial;
-      trial.complex = c;
-      CuttingPlane plane;
-      plane.normal = n;
-      plane.origin = centroid - (dot(n, centroid) - at) * n;
-      plane.cutSubdomainCount = parts;
-      trial.complex.planes.push_back(plane);
-      PlaneSplitOptions splitOptions;
-      splitOptions.snapFraction = snap;
-      if (!splitCell(trial.complex, cell, n, at, planeId, below, above, splitOptions, trial.stats, lastError))
-      {
-        return trial;
-      }
-      trial.ok = true;
-      trial.missing = volumeCriterion ? labelVolume(trial.complex, below) - target : 0.0;
-      trial.error = std::fabs(trial.missing);
-      trial.area = trial.stats.interfaceEdges == 0
-        ? 0.0
-        : std::fabs(dot(n, vectorArea(trial.complex.points, trial.complex.interfaces.back().edges)));
-      return trial;
-    };
-    // The balanced cut with normal n: the offset from the measure function,
-    // corrected by Newton steps on the real split, with snapping reduced
-    // when it keeps the balance out of reach. No trial at all if the
-    // measure puts the plane outside the part (tooThin).
-    auto balancedCut = [&](const Vec3& n, double& at, bool& tooThin) {
-      const HalfSpaceMeasure measure(c, cell, n, options.criterion);
-      double offset = measure.offsetForFraction(fraction, solveTolerance);
-      Trial best;
-      at = offset;
-      tooThin = !(offset > measure.minimumOffset() && offset < measure.maximumOffset());
-      if (tooThin)
-      {
-        return best;
-      }
-      auto keepIfBetter = [&](Trial&& trial, double trialOffset) {
-        if (trial.ok && trial.error < best.error)
-        {
-          best = std::move(trial);
-          at = trialOffset;
-        }
-      };
-      const double smallestSnap = std::min(options.snapFraction, 0.001);
-      for (double snap = options.snapFraction;; snap = std::max(0.5 * snap, smallestSnap))
-      {
-        for (int attempt = 0; attempt < 4; ++attempt)
-        {
-          Trial trial = tryCut(n, offset, snap);
-          const bool ok = trial.ok;
-          const double missing = trial.missing, area = trial.area;
-          keepIfBetter(std::move(trial), offset);
-          if (!ok || best.error <= allowed || !(area > 0))
-          {
-            break;
-          }
-          offset -= missing / area;
-        }
-        if (best.error <= allowed || snap <= smallestSnap)
-        {
-          break;
-        }
-      }
-      // Safety net: if the measure function's start led nowhere (seen with a
-      // part of two bodies bounded by two nearly parallel interfaces, where
-      // the start fell in the gap between them), bisect on the real split.
-      if (volumeCriterion && best.error > allowed)
-      {
-        double lo = measure.minimumOffset(), hi = measure.maximumOffset();
-        for (int step = 0; step < 60 && best.error > allowed; ++step)
-        {
-          const double middle = 0.5 * (lo + hi);
-          Trial trial = tryCut(n, middle, options.snapFraction);
-          if (!trial.ok)
-          {
-            break;
-          }
-          (trial.missing < 0 ? lo : hi) = middle;
-          keepIfBetter(std::move(trial), middle);
-        }
-      }
-      return best;
-    };
-    // The interfaces of the two new parts must still be triangulable (closed
-    // loops that neither cross nor touch); an aligned cut that is not falls
-    // back to the one it improves on.
-    auto interfacesValid = [&](const Trial& trial) {
-      const SurfaceComplex& t = trial.complex;
-      for (const InterfaceRegion& region : t.interfaces)
-      {
-        if (region.pair[0] != below && region.pair[0] != above && region.pair[1] != below &&
-          region.pair[1] != above)
-        {
-          continue;
-        }
-        InterfaceTriangulationOptions check;
-        check.refine = false;
-        if (!triangulateInterface(planarRegionOf(t, region, regionPoints(region)), check).ok)
-        {
-          return false;
-        }
-      }
-      return true;
-    };
-
-    double bestOffset = 0;
-    bool tooThin = false;
-    Trial best = balancedCut(normal, bestOffset, tooThin);
-    if (tooThin)
-    {
-      error = "the subdomains are too many for this surface: a part cannot be cut further";
-      return false;
-    }
-    // Within half the surface's mean edge of the earlier line (and not on an
-    // edge of the part), a parallel line would leave a thin strip of poor
-    // triangles beside it: draw the very same line instead. A plane through
-    // that line rarely balances the part at first, so it turns about the
-    // line until it does (secant steps on the angle, at most the alignment
-    // angle). Accepted within half the tolerance of one subdomain, so that
-    // the errors of all levels of bisection still add up to less than the
-    // tolerance.
-    bool alongLine = false;
-    const double lineOffset = dot(normal, continued.linePoint);
-    const bool nearLine = volumeCriterion && continued.found && !continued.boundsPart && best.ok &&
-      std::fabs(bestOffset - lineOffset) < 0.5 * result.inputMeanEdgeLength;
-    // First the earlier plane itself, when it is also within the alignment
-    // angle of the proposed one: where several parts are cut by nearly one
-    // plane (the four quarters of a ball, say), turning each through one
-    // earlier line still leaves its other lines a hair apart; the same plane
-    // leaves none.
-    if (nearLine)
-    {
-      const CuttingPlane& earlier = c.planes[continued.planeId];
-      const double cosine = dot(earlier.normal, proposedNormal);
-      if (std::fabs(cosine) >= std::cos(options.alignmentAngleDegrees * kPi / 180.0))
-      {
-        const Vec3 n = cosine < 0 ? -1.0 * earlier.normal : earlier.normal;
-        Trial same = tryCut(n, dot(n, earlier.origin), options.snapFraction);
-        if (same.ok && same.error <= 2.0 * allowed && interfacesValid(same))
-        {
-          best = std::move(same);
-          alongLine = true;
-          ++result.alignedLines;
-        }
-      }
-    }
-    if (nearLine && !alongLine)
-    {
-      const Vec3 sideways = cross(continued.direction, normal);
-      const double largestTurn = options.alignmentAngleDegrees * kPi / 180.0;
-      Trial aligned;
-      double angle0 = 0, missing0 = 0, angle1 = 0, missing1 = 0;
-      for (int step = 0; step < 10 && aligned.error > allowed; ++step)
-      {
-        double angle = 0; // first the plane through the line as it is
-        if (step == 1)
-        {
-          angle = 1e-3; // then a small turn, for the secant
-        }
-        else if (step > 1)
-        {
-          if (missing1 == missing0)
-          {
-            break;
-          }
-          angle = angle1 - missing1 * (angle1 - angle0) / (missing1 - missing0);
-        }
-        if (!(std::fabs(angle) <= largestTurn))
-        {
-          break;
-        }
-        const Vec3 n = normalized(std::cos(angle) * normal + std::sin(angle) * sideways);
-        Trial trial = tryCut(n, dot(n, continued.linePoint), options.snapFraction);
-        if (!trial.ok)
-        {
-          break;
-        }
-        angle0 = angle1;
-        missing0 = missing1;
-        angle1 = angle;
-        missing1 = trial.missing;
-        if (trial.error < aligned.error)
-        {
-          aligned = std::move(trial);
-        }
-      }
-      if (aligned.ok && aligned.error <= 2.0 * allowed && interfacesValid(aligned))
-      {
-        best = std::move(aligned);
-        alongLine = true;
-        ++result.alignedLines;
-      }
-    }
-    if (continued.found && !alongLine && !(best.ok && interfacesValid(best)))
-    {
-      // the parallel cut is no good either: the plane the part asked for
-      Trial proposed = balancedCut(proposedNormal, bestOffset, tooThin);
-      if (proposed.ok)
-      {
-        best = std::move(proposed);
-      }
-    }
-    if (continued.found)
-    {
-      ++result.alignedNormals;
-    }
-    if (!best.ok)
-    {
-      // every split failed (with a reason), or none gave a finite volume
-      error = lastError.empty() ? "no cut of a part gave a finite volume" : lastError;
-      return false;
-    }
-    c = std::move(best.complex);
-    result.splitStats.splitTriangles += best.stats.splitTriangles;
-    result.splitStats.snappedPoints += best.stats.snappedPoints;
-    result.splitStats.chordPoints += best.stats.chordPoints;
-    return true;
+    PartCut part(c, options, result, cell, fraction, parts, below, above, solveTolerance);
+    return part.run(proposedNormal, error);
   };
 
   if (K > 1 && options.strategy == CutStrategy::ParallelPlanes)

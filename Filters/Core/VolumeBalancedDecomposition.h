@@ -60,6 +60,8 @@ struct DecompositionResult
   double maximumImbalance = 0;          // max over subdomains of |measure / target - 1|
   int alignedNormals = 0;               // cuts turned to draw a line parallel to one they nearly continued
   int alignedLines = 0;                 // ... and then turned about that line, drawing the same line
+  int rejectedCuts = 0;                 // cuts whose parts crossed themselves, replaced by another
+  int clearedPlanes = 0;                // cuts moved within the balance budget away from points (PlaneClearance)
 };
 
 // The input triangles may be unmerged (STL); `sourceFaces` of the result

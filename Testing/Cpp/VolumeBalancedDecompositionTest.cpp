@@ -1,4 +1,5 @@
 #include "OffFormat.h"
+#include "SelfIntersectionCheck.h"
 #include "SubdomainAssignment.h"
 #include "TestSurfaces.h"
 #include "VolumeBalancedDecomposition.h"
@@ -385,4 +386,108 @@ TEST(VolumeBalancedDecomposition, InterfacePointsInsideTheObjectLieOnTheirPlanes
             << " off their plane\n";
   EXPECT_GT(checked, 1000u);
   EXPECT_LT(off, checked / 50); // measured 40 of 3,244; 763 before chord points were put on their line
+}
+
+namespace
+{
+// Triangulates every interface (as the InterfaceTriangulator does) and
+// counts the subdomains whose closed surface crosses itself (CGAL, exact
+// predicates) or cannot be checked.
+int crossingSubdomains(const DecompositionResult& r)
+{
+  SurfaceComplex c = r.complex;
+  const InterfaceFigures figures = triangulateAllInterfaces(c);
+  EXPECT_TRUE(figures.ok) << figures.error;
+  int crossing = 0;
+  for (int s = 0; s < c.subdomainCount; ++s)
+  {
+    const SelfIntersectionReport report = checkSelfIntersection({ c.points, subdomainTriangles(c, s) });
+    crossing += (!report.checked || report.intersects) ? 1 : 0;
+  }
+  return crossing;
+}
+} // namespace
+
+// Issue #18: CGAL's 19-vertex triple torus (Data/regression/triple_torus.off)
+// came out of recursive bisection with 1 or 2 self-intersecting subdomains
+// at K = 4, 6, 8, 16 (and 9 more K up to 64): planes passing near saddle
+// vertices snapped them, the contour crossed itself there and pinched the
+// part. Every subdomain must be closed and free of self-intersections, with
+// both strategies.
+TEST(VolumeBalancedDecomposition, CoarseTripleTorusNeverCrossesItself)
+{
+  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/triple_torus.off");
+  ASSERT_TRUE(file.ok) << file.error;
+  for (CutStrategy strategy : { CutStrategy::RecursiveBisection, CutStrategy::ParallelPlanes })
+  {
+    for (int K : { 4, 6, 8, 14, 16 })
+    {
+      std::ostringstream label;
+      label << "triple torus K=" << K << " " << toString(strategy);
+      DecompositionOptions options;
+      options.numberOfSubdomains = K;
+      options.strategy = strategy;
+      const DecompositionResult r = decomposeVolumeBalanced(file.data.surface, options);
+      ASSERT_TRUE(r.ok) << label.str() << ": " << r.error;
+      EXPECT_LE(r.maximumImbalance, options.balanceTolerance) << label.str();
+      expectClosedSubdomains(r.complex, label.str());
+      EXPECT_EQ(crossingSubdomains(r), 0) << label.str();
+    }
+  }
+}
+
+// The OpenSCAD example002 at $fn = 12 (Data/regression/openscad_example002.off):
+// edges of about 10 units snap vertices up to 0.5 off a plane; at K = 12 the
+// interface bent through them crossed a surface triangle. Such a cut is
+// replaced (rejectedCuts counts it), never shipped.
+TEST(VolumeBalancedDecomposition, CoarseCadNeverCrossesItself)
+{
+  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/openscad_example002.off");
+  ASSERT_TRUE(file.ok) << file.error;
+  for (int K : { 8, 12, 16 })
+  {
+    DecompositionOptions options;
+    options.numberOfSubdomains = K;
+    const DecompositionResult r = decomposeVolumeBalanced(file.data.surface, options);
+    ASSERT_TRUE(r.ok) << "K=" << K << ": " << r.error;
+    expectClosedSubdomains(r.complex, "example002");
+    EXPECT_EQ(crossingSubdomains(r), 0) << "example002 K=" << K;
+  }
+}
+
+// The OpenSCAD example005 at $fn = 12 (Data/regression/openscad_example005.off):
+// at K = 10 a later cut split a piece of the first interface that snapped
+// vertices had left bent, and the piece, triangulated anew, crossed a
+// surface triangle of the part on its other side. The parts across the
+// split interfaces are checked too.
+TEST(VolumeBalancedDecomposition, CadPartAcrossASplitInterfaceNeverCrossesItself)
+{
+  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/openscad_example005.off");
+  ASSERT_TRUE(file.ok) << file.error;
+  DecompositionOptions options;
+  options.numberOfSubdomains = 10;
+  const DecompositionResult r = decomposeVolumeBalanced(file.data.surface, options);
+  ASSERT_TRUE(r.ok) << r.error;
+  expectClosedSubdomains(r.complex, "example005");
+  EXPECT_EQ(crossingSubdomains(r), 0) << "example005 K=10";
+}
+
+// PlaneClearance: points on the plane (up to round-off) do not count, a
+// plane a hair off a row of points scores about 0, and within a window the
+// clearest offset is the one through the grid plane, not a hair off it.
+TEST(PlaneClearance, AwayFromPointsOrThroughThem)
+{
+  SurfaceComplex c;
+  const TriangleSurface box = subdividedBox({ 0, 0, 0 }, { 1, 1, 1 }, 4); // edges 0.25 (diagonals longer)
+  c.points = box.points;
+  c.triangles = box.triangles;
+  c.trianglePairs.assign(c.triangles.size(), SubdomainPair{ 0, -1 });
+  const PlaneClearance clearance(c, 0, { 1, 0, 0 });
+  EXPECT_NEAR(clearance.at(0.25), 1.0, 1e-9);          // next points 0.25 away, edges 0.25
+  EXPECT_NEAR(clearance.at(0.25 + 1e-4), 4e-4, 1e-9);  // a hair off the grid plane
+  EXPECT_NEAR(clearance.at(0.375), 0.5, 1e-9);         // half way between grid planes
+  EXPECT_EQ(clearance.clearestOffset(0.24, 0.26, 0.2501, 0.5), 0.25);
+  EXPECT_NEAR(clearance.clearestOffset(0.3, 0.45, 0.31, 0.5), 0.375, 1e-12);
+  // enough is enough: of offsets clear by half an edge, the nearest to the preferred one
+  EXPECT_NEAR(clearance.clearestOffset(0.3, 0.45, 0.31, 0.2), 0.31, 1e-12);
 }
