@@ -115,16 +115,7 @@ std::vector<int> facetLabels(
   // piece still joins, as everything within 1e-13 of the subdomain's
   // bounding-box diagonal does, far below the 1e-12 a point may lie off the
   // input surface.
-  Vec3 lo = s.surface.points.front(), hi = lo;
-  for (const Vec3& p : s.surface.points)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      lo[c] = std::min(lo[c], p[c]);
-      hi[c] = std::max(hi[c], p[c]);
-    }
-  }
-  const double roundOff = 1e-13 * norm(hi - lo);
+  const double roundOff = 1e-13 * boundingBoxDiagonal(s.surface.points);
   std::vector<int> label(tris.size(), -1);
   int facets = 0;
   std::vector<Index> stack;

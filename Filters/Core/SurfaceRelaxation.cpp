@@ -58,24 +58,6 @@ Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const V
   return a + (vb * denom) * ab + (vc * denom) * ac;
 }
 
-double boundingBoxDiagonal(const std::vector<Vec3>& points)
-{
-  if (points.empty())
-  {
-    return 0;
-  }
-  Vec3 lo = points.front(), hi = points.front();
-  for (const Vec3& p : points)
-  {
-    for (int i = 0; i < 3; ++i)
-    {
-      lo[i] = std::min(lo[i], p[i]);
-      hi[i] = std::max(hi[i], p[i]);
-    }
-  }
-  return norm(hi - lo);
-}
-
 // Enclosed volume of the outer surface (triangles facing the outside).
 double enclosedVolume(const SurfaceComplex& c)
 {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
 namespace ptm
 {
@@ -55,6 +56,25 @@ inline Vec3 pointOnBothPlanes(const Vec3& n1, double d1, const Vec3& n2, double 
 {
   const Vec3 line = cross(n1, n2);
   return (1.0 / dot(line, line)) * (d1 * cross(n2, line) + d2 * cross(line, n1));
+}
+// The length of the diagonal of the points' bounding box (0 for none): the
+// scale that relative tolerances refer to.
+inline double boundingBoxDiagonal(const std::vector<Vec3>& points)
+{
+  if (points.empty())
+  {
+    return 0;
+  }
+  Vec3 lo = points.front(), hi = points.front();
+  for (const Vec3& p : points)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      lo[i] = std::min(lo[i], p[i]);
+      hi[i] = std::max(hi[i], p[i]);
+    }
+  }
+  return norm(hi - lo);
 }
 } // namespace ptm
 #endif

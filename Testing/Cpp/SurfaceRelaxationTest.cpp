@@ -60,20 +60,6 @@ Kernel::Point_3 toCgal(const Vec3& p)
   return { p[0], p[1], p[2] };
 }
 
-double diagonal(const std::vector<Vec3>& points)
-{
-  Vec3 lo = points.front(), hi = points.front();
-  for (const Vec3& p : points)
-  {
-    for (int i = 0; i < 3; ++i)
-    {
-      lo[i] = std::min(lo[i], p[i]);
-      hi[i] = std::max(hi[i], p[i]);
-    }
-  }
-  return norm(hi - lo);
-}
-
 double enclosedVolume(const SurfaceComplex& c)
 {
   double v = 0;
@@ -207,7 +193,7 @@ TEST_P(SurfaceRelaxation, SmoothSurfaceMovesNodesOnlyAndRemovesThinTriangles)
     EXPECT_EQ(inverted, 0u) << label.str();
 
     // surface nodes on the input surface, interface nodes in their plane
-    const double tolerance = 1e-12 * diagonal(k.surface.points);
+    const double tolerance = 1e-12 * boundingBoxDiagonal(k.surface.points);
     std::vector<CgalTriangle> input;
     for (const Triangle& t : k.surface.triangles)
     {
@@ -388,7 +374,7 @@ TEST_P(KeepSurfaceRelaxation, KeepsEverySubdomainExactly)
     }
     Tree tree(input.begin(), input.end());
     tree.accelerate_distance_queries();
-    const double tolerance = 1e-12 * diagonal(before.points);
+    const double tolerance = 1e-12 * boundingBoxDiagonal(before.points);
     double worst = 0;
     std::size_t moved = 0, inverted = 0;
     for (std::size_t v = 0; v < after.points.size(); ++v)
