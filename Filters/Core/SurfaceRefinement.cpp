@@ -274,8 +274,10 @@ SegmentPoints splitSegments(SubdomainSurface& s, const std::vector<std::array<In
   SegmentPoints split;
   auto& pts = s.surface.points;
   const auto& tris = s.surface.triangles;
-  const std::vector<Vec3> corners = pts; // the spacing looks at the input's corners only
-  const SegmentSpacing spacing(corners, tris, label, size, boundRadians);
+  // the spacing looks at the input's corners only, so the new points are
+  // appended after every segment is measured
+  const SegmentSpacing spacing(pts, tris, label, size, boundRadians);
+  std::vector<Vec3> added;
   for (std::size_t t = 0; t < tris.size(); ++t)
   {
     for (int k = 0; k < 3 && label[t] >= 0; ++k)
@@ -292,14 +294,15 @@ SegmentPoints splitSegments(SubdomainSurface& s, const std::vector<std::array<In
       {
         continue;
       }
-      std::vector<Index>& added = split[e];
+      std::vector<Index>& onSegment = split[e];
       for (int i = 1; i < static_cast<int>(parts); ++i)
       {
-        added.push_back(static_cast<Index>(pts.size()));
-        pts.push_back(a + (static_cast<double>(i) / parts) * d);
+        onSegment.push_back(static_cast<Index>(pts.size() + added.size()));
+        added.push_back(a + (static_cast<double>(i) / parts) * d);
       }
     }
   }
+  pts.insert(pts.end(), added.begin(), added.end());
   return split;
 }
 /// @}
