@@ -147,6 +147,23 @@ MeshedSubdomain meshSubdomain(ptm::SubdomainSurface& surface, const ptm::TetMesh
     m.volumeChange = m.deviation = 0;
     r = ptm::meshClosedSurface(surface.surface, options);
   }
+  if (!r.ok && options.qualityRefinement)
+  {
+    // TetGen 1.5's crashes are mostly assertions in its quality refinement
+    // (oblong, K = 64 parallel planes: signal 6 in all three point orders
+    // for one subdomain); without -q it still recovers the surface and
+    // bounds the volume, so the run ends with a mesh and a warning.
+    ptm::TetMeshingOptions sizeOnly = options;
+    sizeOnly.qualityRefinement = false;
+    ptm::TetMeshingResult plain = ptm::meshClosedSurface(surface.surface, sizeOnly);
+    if (plain.ok)
+    {
+      m.warnings.push_back("TetGen failed with quality refinement (" + r.error +
+        "); meshed with the volume bound only (no -q), so this subdomain's tetrahedra are not "
+        "quality-bounded");
+      r = std::move(plain);
+    }
+  }
   if (!r.ok)
   {
     m.error = r.error;

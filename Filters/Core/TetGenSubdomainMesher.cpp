@@ -513,10 +513,14 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
 
   std::ostringstream switches;
   switches.precision(17);
-  switches << "pYzQq" << options.radiusEdgeRatio;
-  if (options.minimumDihedralAngle > 0)
+  switches << "pYzQ";
+  if (options.qualityRefinement)
   {
-    switches << "/" << options.minimumDihedralAngle;
+    switches << "q" << options.radiusEdgeRatio;
+    if (options.minimumDihedralAngle > 0)
+    {
+      switches << "/" << options.minimumDihedralAngle;
+    }
   }
   switches << "a" << volume << options.extraSwitches;
   r.switchesUsed = switches.str();

@@ -26,6 +26,9 @@ struct TetMeshingOptions
   double radiusEdgeRatio = 2.0;      // -q bound, > 1
   double minimumDihedralAngle = 0.0; // second -q value in degrees; 0: TetGen's default
   double maximumVolume = 0.0;        // -a; 0: regular tetrahedron of the mean surface edge
+  // false: no -q, only the volume bound refines (the last resort of the
+  // mesher for a subdomain where TetGen's quality refinement crashes)
+  bool qualityRefinement = true;
   std::string extraSwitches;         // only O, S, T, V with numbers (what cannot break the contract)
   // per TetGen run, processor and wall time; 0: 2 s + 30 us of processor time
   // per expected tetrahedron (about 6x TetGen's speed), 60 s + 10 us of wall time

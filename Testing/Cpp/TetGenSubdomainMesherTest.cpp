@@ -83,6 +83,25 @@ TEST(TetGenSubdomainMesher, BoxAndBallKeepTheirSurfaceExactly)
   EXPECT_NE(r.switchesUsed.find("pY"), std::string::npos);
 }
 
+// The mesher's last resort: no -q, the surface still kept and the volume
+// bound still met (on a surface of matching resolution, as below), only
+// without quality refinement.
+TEST(TetGenSubdomainMesher, WithoutQualityRefinementOnlyTheVolumeBoundRefines)
+{
+  const TriangleSurface box = subdividedBox({ 0, 0, 0 }, { 1, 1, 1 }, 10);
+  TetMeshingOptions options;
+  options.maximumVolume = 0.0005;
+  options.qualityRefinement = false;
+  const TetMeshingResult r = meshClosedSurface(box, options);
+  expectConformingMesh(box, r, "box with -a, no -q");
+  EXPECT_EQ(r.switchesUsed.find('q'), std::string::npos) << r.switchesUsed;
+  EXPECT_GT(r.mesh.points.size(), box.points.size()) << "the volume bound added no point";
+  for (const auto& t : r.mesh.tets)
+  {
+    EXPECT_LE(tetVolume(r.mesh, t), 0.0005 * (1 + 1e-9));
+  }
+}
+
 TEST(TetGenSubdomainMesher, VolumeBoundIsRespected)
 {
   // With the surface preserved (Y) TetGen cannot refine below the surface's
@@ -146,11 +165,11 @@ TEST(TetGenSubdomainMesher, StallInOnePointOrderIsStoppedAndRetriedInAnother)
   ASSERT_TRUE(file.ok) << file.error;
   TetMeshingOptions options;
   options.maximumVolume = 1.6696252433859985e-06;
-  const auto start = std::chrono::steady_clock::now();
+  // (no wall-clock bound here: 2 attempts prove the first was stopped, and
+  // a busy CI machine took 71 s for what takes 20 s alone; CTest's timeout
+  // catches a hang)
   const TetMeshingResult r = meshClosedSurface(file.data.surface, options);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_EQ(r.attempts, 2);
-  EXPECT_LT(seconds, 60);
   expectConformingMesh(file.data.surface, r, "stalled, then retried in another order");
 }
 
