@@ -4,6 +4,7 @@
 #include "PolyDataConversion.h"
 #include "PropertyChecks.h"
 #include "RankCollectives.h"
+#include "SizeExpression.h"
 #include "SurfaceComplexArrays.h"
 
 #include "vtkDoubleArray.h"
@@ -99,6 +100,32 @@ int vtkInterfaceTriangulator::RequestData(
   ptm::InterfaceTriangulationOptions options;
   options.minimumAngleDegrees = this->MinimumAngle;
   options.maximumEdgeLength = this->MaximumEdgeLength;
+  options.sizeAt = ptm::sizeFunctionOf(this->SizeExpression, localError);
+  if (!localError.empty())
+  {
+    // the same property on every rank, so every rank stops here
+    vtkErrorMacro(<< "InterfaceTriangulator: " << localError);
+    output->Initialize();
+    return 0;
+  }
+  // A size field must be positive where the interfaces meet the surface
+  // (inside, the mesher falls back to the automatic size); a field that
+  // reaches 0 at the surface would refine without end.
+  if (options.sizeAt)
+  {
+    std::vector<double> sizes;
+    std::string error;
+    if (!ptm::sizesAt(options.sizeAt, this->SizeExpression, piece.complex.points, sizes, error))
+    {
+      localError = "InterfaceTriangulator: " + error;
+    }
+  }
+  if (!ptm::agreeAllSucceeded(controller, localError.empty(), localError, message))
+  {
+    vtkErrorMacro(<< message);
+    output->Initialize();
+    return 0;
+  }
   ptm::SurfaceComplex& c = piece.complex;
   struct Done
   {
@@ -267,5 +294,6 @@ void vtkInterfaceTriangulator::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "MinimumAngle: " << this->MinimumAngle << "\n";
   os << indent << "MaximumEdgeLength: " << this->MaximumEdgeLength << "\n";
+  os << indent << "SizeExpression: " << this->SizeExpression << "\n";
   os << indent << "Controller: " << this->Controller << "\n";
 }

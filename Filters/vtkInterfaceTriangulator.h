@@ -26,6 +26,8 @@
 #include "ParallelTetMesherFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
 
+#include <string>
+
 class vtkMultiProcessController;
 
 class PARALLELTETMESHERFILTERS_EXPORT vtkInterfaceTriangulator : public vtkPolyDataAlgorithm
@@ -50,6 +52,15 @@ public:
   vtkGetMacro(MaximumEdgeLength, double);
   ///@}
 
+  ///@{
+  /// A size field: the edge length wanted at (x, y, z), an expression in the
+  /// syntax of ParaView's Calculator. Empty (default): none. When set it
+  /// replaces the automatic sizing (MaximumEdgeLength still caps it); give
+  /// ParallelTetMesher the same expression.
+  vtkSetMacro(SizeExpression, std::string);
+  vtkGetMacro(SizeExpression, std::string);
+  ///@}
+
   void SetController(vtkMultiProcessController*);
   vtkGetObjectMacro(Controller, vtkMultiProcessController);
 
@@ -62,6 +73,7 @@ protected:
 
   double MinimumAngle = 20.7;
   double MaximumEdgeLength = 0.0;
+  std::string SizeExpression;
   vtkMultiProcessController* Controller = nullptr;
 
 private:

@@ -95,6 +95,18 @@ public:
   ///@}
 
   ///@{
+  /// A size field: the edge length wanted at (x, y, z), as an expression in
+  /// the syntax of ParaView's Calculator (e.g. "0.02 + 0.1 * abs(z)"). Empty
+  /// (default): none. It sets the boundary refinement's local target and,
+  /// at every subdomain surface point, TetGen's sizing (-m), which TetGen
+  /// interpolates inside; MaximumVolume still bounds every tetrahedron.
+  /// Give InterfaceTriangulator the same expression. Sizes must be positive
+  /// at every surface point, or the filter fails with the point named.
+  vtkSetMacro(SizeExpression, std::string);
+  vtkGetMacro(SizeExpression, std::string);
+  ///@}
+
+  ///@{
   /// Extra TetGen switches for experts (validated: nothing that breaks the surface contract).
   vtkSetMacro(ExtraSwitches, std::string);
   vtkGetMacro(ExtraSwitches, std::string);
@@ -116,6 +128,7 @@ protected:
   double MaximumVolume = 0.0;
   double MinimumDihedralAngle = 0.0;
   std::string ExtraSwitches;
+  std::string SizeExpression;
   bool BoundaryRefinement = true;
   double BoundaryMinimumAngle = 20.7;
   double CoplanarTolerance = 0.0;

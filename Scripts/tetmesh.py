@@ -30,6 +30,9 @@ def parse_arguments(argv):
     p.add_argument("--subdomains", type=int, default=0, help="number of subdomains K (0: one per rank)")
     p.add_argument("--size", type=float, default=0.0,
                    help="target edge length for interfaces and tetrahedra (0: the surface's own resolution)")
+    p.add_argument("--size-expression", default="",
+                   help="size field: the edge length wanted at x, y, z, in the syntax of ParaView's Calculator "
+                        "(e.g. '0.02 + 0.1 * abs(z)'); --size, when given, caps it")
     p.add_argument("--strategy", default="RecursiveBisection", choices=["RecursiveBisection", "ParallelPlanes"])
     p.add_argument("--direction", default="Inertia", choices=["Inertia", "LongestExtent", "X", "Y", "Z"])
     p.add_argument("--radius-edge-ratio", type=float, default=2.0, help="TetGen quality bound (default 2.0)")
@@ -118,7 +121,8 @@ def main(argv):
     run("read", reader)
     cutter = run("cut", simple.VolumeBalancedCutter(
         Input=reader, NumberOfSubdomains=args.subdomains, Strategy=args.strategy, Direction=args.direction))
-    interfaces = run("interface", simple.InterfaceTriangulator(Input=cutter, MaximumEdgeLength=args.size))
+    interfaces = run("interface", simple.InterfaceTriangulator(Input=cutter, MaximumEdgeLength=args.size,
+                                                                 SizeExpression=args.size_expression))
     relaxed = run("relax", simple.SurfaceRelaxer(Input=interfaces, NumberOfIterations=args.relax_iterations,
                                                  Mode=args.relax_mode,
                                                  MaximumSurfaceDeviation=args.max_surface_deviation))
@@ -126,7 +130,7 @@ def main(argv):
     mesher = run("volume meshing", simple.ParallelTetMesher(
         Input=relaxed, RadiusEdgeRatio=args.radius_edge_ratio, MaximumVolume=volume,
         BoundaryRefinement=0 if args.no_boundary_refinement else 1,
-        CoplanarTolerance=args.coplanar_tolerance))
+        CoplanarTolerance=args.coplanar_tolerance, SizeExpression=args.size_expression))
 
     start = time.perf_counter()
     output = os.path.abspath(args.output)

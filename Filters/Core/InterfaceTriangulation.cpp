@@ -322,6 +322,23 @@ InterfaceTriangulationResult triangulateInterface(
     const Vec3 d = p - region.origin;
     return Point(dot(d, e1), dot(d, e2));
   };
+  // The size a vertex at p gets from the options, or `automatic`. A size
+  // field is used as given, except that inside, where the filters do not
+  // check it, a value that is not positive gives the automatic size and none
+  // goes below 1e-3 of the region's diagonal: a field crossing 0 inside a
+  // unit square refined towards the zero line until the point cap (over 4
+  // minutes); so floored, a region gets at most a few million points.
+  const bool fixedSize = options.maximumEdgeLength > 0 || options.sizeAt;
+  const double smallestField = 1e-3 * boundingBoxDiagonal(region.points);
+  auto sizeFor = [&](const Point& p, double automatic) {
+    if (!options.sizeAt)
+    {
+      return options.maximumEdgeLength > 0 ? options.maximumEdgeLength : automatic;
+    }
+    double field = options.sizeAt(region.origin + p.x() * e1 + p.y() * e2);
+    field = field > 0 && std::isfinite(field) ? std::max(field, smallestField) : automatic;
+    return options.maximumEdgeLength > 0 ? std::min(field, options.maximumEdgeLength) : field;
+  };
   for (const auto& p : region.points)
   {
     if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
@@ -364,9 +381,8 @@ InterfaceTriangulationResult triangulateInterface(
         return result;
       }
       v->info().index = static_cast<Index>(i);
-      v->info().size = options.maximumEdgeLength > 0 ? options.maximumEdgeLength
-        : segmentCount[i] > 0                         ? spacing[i] / segmentCount[i]
-                                                      : std::numeric_limits<double>::infinity();
+      v->info().size = sizeFor(v->point(), segmentCount[i] > 0 ? spacing[i] / segmentCount[i]
+                                                                : std::numeric_limits<double>::infinity());
       vertices[i] = v;
     }
     for (const auto& e : region.edges)
@@ -469,7 +485,7 @@ InterfaceTriangulationResult triangulateInterface(
   }
   for (std::size_t i = 0; i < n; ++i)
   {
-    if (segmentCount[i] || (options.keepIsolatedPoints && options.maximumEdgeLength > 0))
+    if (segmentCount[i] || (options.keepIsolatedPoints && fixedSize))
     {
       smallestSize = std::min(smallestSize, vertices[i]->info().size);
     }
@@ -490,7 +506,7 @@ InterfaceTriangulationResult triangulateInterface(
   // Too large is an edge longer than the size field allows. A maximum edge
   // length is a hard bound; the automatic size is the local spacing, and
   // allowing 1.3 x it makes the mean edge about equal to the spacing.
-  const double sizeFactor = options.maximumEdgeLength > 0 ? 1.0 : 1.3;
+  const double sizeFactor = fixedSize ? 1.0 : 1.3;
   auto faceSize = [&](Face f) {
     return (f->vertex(0)->info().size + f->vertex(1)->info().size + f->vertex(2)->info().size) / 3.0;
   };
@@ -590,7 +606,7 @@ InterfaceTriangulationResult triangulateInterface(
     {
       size = std::min(size, w->info().size + gradation * std::sqrt(CGAL::squared_distance(p, w->point())));
     }
-    v->info().size = options.maximumEdgeLength > 0 ? options.maximumEdgeLength : std::min(size, largestSize);
+    v->info().size = sizeFor(p, std::min(size, largestSize));
     added.push_back(p);
     auto f = cdt.incident_faces(v), done = f;
     do

@@ -24,10 +24,14 @@
 // The same input always gives bit-identical output.
 #include "SurfaceComplex.h"
 
+#include <functional>
 #include <string>
 
 namespace ptm
 {
+// A size field: the edge length wanted at a point in space. Empty: none.
+using SizeFunction = std::function<double(const Vec3&)>;
+
 struct PlanarRegion
 {
   Vec3 origin;                            // a point of the plane
@@ -45,6 +49,11 @@ struct InterfaceTriangulationOptions
   // keeps them as fixed vertices, which must lie strictly inside the region
   // (the input vertices inside a planar facet of the boundary refinement).
   bool keepIsolatedPoints = false;
+  // A size field: the edge length wanted at a point in space (> 0). When
+  // set, it replaces the automatic sizing at every vertex as a hard bound,
+  // capped by maximumEdgeLength when that is set too. It must be
+  // deterministic, so that both sides of an interface get the same mesh.
+  SizeFunction sizeAt;
 };
 
 struct InterfaceTriangulation

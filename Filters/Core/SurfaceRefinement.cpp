@@ -170,9 +170,10 @@ class SegmentSpacing
 {
 public:
   SegmentSpacing(const std::vector<Vec3>& points, const std::vector<Triangle>& triangles,
-    const std::vector<int>& label, double size, double boundRadians)
+    const std::vector<int>& label, double size, const SizeFunction& sizeAt, double boundRadians)
     : Points(points)
     , Size(size)
+    , SizeAt(sizeAt)
     , FacetsOf(points.size())
   {
     int facets = 0;
@@ -210,7 +211,8 @@ public:
   {
     const Vec3 pa = this->Points[a], d = this->Points[b] - pa;
     const double length2 = dot(d, d);
-    double spacing = this->Size;
+    const double local = this->LocalSize(pa + 0.5 * d);
+    double spacing = local;
     std::array<long long, 3> lo = this->CellOf(pa), hi = lo;
     for (const std::array<long long, 3>& c : { this->CellOf(this->Points[b]) })
     {
@@ -241,10 +243,22 @@ public:
             spacing = std::min(spacing, norm(this->Points[v] - (pa + t * d)));
           }
         }
-    return std::max(spacing, this->Size / 8.0);
+    return std::max(spacing, local / 8.0);
   }
 
 private:
+  // the size field at p where it is set and positive, within [Size / 1000,
+  // Size] (a field crossing 0 between two positive corners must not split a
+  // segment without end)
+  double LocalSize(const Vec3& p) const
+  {
+    if (!this->SizeAt)
+    {
+      return this->Size;
+    }
+    const double field = this->SizeAt(p);
+    return field > 0 && field < this->Size ? std::max(field, 1e-3 * this->Size) : this->Size;
+  }
   std::array<long long, 3> CellOf(const Vec3& p) const
   {
     return { static_cast<long long>(std::floor(p[0] / this->Size)),
@@ -259,6 +273,7 @@ private:
 
   const std::vector<Vec3>& Points;
   double Size;
+  const SizeFunction& SizeAt;
   std::vector<std::vector<int>> FacetsOf; // the facets each point is a corner of a poor triangle of
   std::unordered_map<std::uint64_t, std::vector<Index>> Cells;
 };
@@ -269,14 +284,14 @@ private:
 // so the same surface always numbers them alike. Edges next to an interface
 // are contours, which the neighbouring subdomain has too: never split here.
 SegmentPoints splitSegments(SubdomainSurface& s, const std::vector<std::array<Index, 3>>& across,
-  const std::vector<int>& label, double size, double boundRadians)
+  const std::vector<int>& label, double size, const SizeFunction& sizeAt, double boundRadians)
 {
   SegmentPoints split;
   auto& pts = s.surface.points;
   const auto& tris = s.surface.triangles;
   // the spacing looks at the input's corners only, so the new points are
   // appended after every segment is measured
-  const SegmentSpacing spacing(pts, tris, label, size, boundRadians);
+  const SegmentSpacing spacing(pts, tris, label, size, sizeAt, boundRadians);
   std::vector<Vec3> added;
   for (std::size_t t = 0; t < tris.size(); ++t)
   {
@@ -628,7 +643,7 @@ SurfaceRefinementResult refineSubdomainSurface(
 
   SubdomainSurface refined = surface; // the work copy: the input stays intact for a fallback
   const SegmentPoints split =
-    splitSegments(refined, across, label, options.size, options.minimumAngleDegrees * kPi / 180.0);
+    splitSegments(refined, across, label, options.size, options.sizeAt, options.minimumAngleDegrees * kPi / 180.0);
   const std::vector<Facet> facets = collectFacets(surface, across, label, split);
   result.facets = facets.size();
   result.segmentsSplit = split.size();
@@ -650,6 +665,7 @@ SurfaceRefinementResult refineSubdomainSurface(
   InterfaceTriangulationOptions facetOptions;
   facetOptions.minimumAngleDegrees = options.minimumAngleDegrees;
   facetOptions.maximumEdgeLength = options.size;
+  facetOptions.sizeAt = options.sizeAt;
   facetOptions.keepIsolatedPoints = true;
   for (std::size_t f = 0; f < facets.size(); ++f)
   {

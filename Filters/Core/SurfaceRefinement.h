@@ -26,6 +26,7 @@
 //  So the enclosed volume does not change beyond round-off.
 //  On a facet the mesher refuses (degenerate input), the surface is returned
 //  unrefined with a warning: still conforming, only not improved.
+#include "InterfaceTriangulation.h"
 #include "SubdomainSurface.h"
 
 #include <string>
@@ -35,7 +36,10 @@ namespace ptm
 {
 struct SurfaceRefinementOptions
 {
-  double size = 0.0;                 // target edge length, > 0
+  double size = 0.0;                 // target edge length, > 0 (with sizeAt: its upper bound)
+  // optional size field (edge length wanted at a point); where it is
+  // positive and below `size` it sets the local target instead
+  SizeFunction sizeAt;
   double minimumAngleDegrees = 20.7; // quality bound of the facet meshes, (0, 34]
   // 0 (default): a facet is exactly planar, and the surface keeps its
   // geometry. > 0: outer triangles whose normals lie within this angle of a

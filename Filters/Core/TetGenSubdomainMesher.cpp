@@ -360,7 +360,8 @@ bool runTetGenIsolated(tetgenio& in, const std::string& switches, double cpuSeco
 // TetGen's input: the surface points in the given order (position[i] is
 // where surface point i goes), one facet per triangle, the hole points.
 void fillTetGenInput(const TriangleSurface& s, const std::vector<Index>& order,
-  const std::vector<int>& position, const std::vector<Vec3>& holes, tetgenio& in)
+  const std::vector<int>& position, const std::vector<Vec3>& holes,
+  const std::vector<double>& sizes, tetgenio& in)
 {
   const std::size_t n = s.points.size();
   in.firstnumber = 0;
@@ -371,6 +372,15 @@ void fillTetGenInput(const TriangleSurface& s, const std::vector<Index>& order,
     for (int k = 0; k < 3; ++k)
     {
       in.pointlist[3 * i + k] = s.points[order[i]][k];
+    }
+  }
+  if (!sizes.empty())
+  {
+    in.numberofpointmtrs = 1;
+    in.pointmtrlist = new REAL[n];
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      in.pointmtrlist[i] = sizes[order[i]];
     }
   }
   in.numberoffacets = static_cast<int>(s.triangles.size());
@@ -434,6 +444,14 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
     r.error = "invalid options: the radius-edge ratio must exceed 1, the maximum volume and the "
               "time limit must not be negative, the minimum dihedral angle must lie in [0, 70) "
               "degrees";
+    return r;
+  }
+  if (!options.pointSizes.empty() &&
+    (options.pointSizes.size() != n ||
+      !std::all_of(options.pointSizes.begin(), options.pointSizes.end(),
+        [](double h) { return h > 0 && std::isfinite(h); })))
+  {
+    r.error = "invalid options: the point sizes must be one positive, finite size per surface point";
     return r;
   }
   if (!validExtraSwitches(options.extraSwitches))
@@ -513,7 +531,7 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
 
   std::ostringstream switches;
   switches.precision(17);
-  switches << "pYzQ";
+  switches << "pYzQ" << (options.pointSizes.empty() ? "" : "m");
   if (options.qualityRefinement)
   {
     switches << "q" << options.radiusEdgeRatio;
@@ -575,7 +593,7 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
       position[order[i]] = static_cast<int>(i);
     }
     tetgenio in;
-    fillTetGenInput(s, order, position, holes, in);
+    fillTetGenInput(s, order, position, holes, options.pointSizes, in);
     outPoints.clear();
     outTets.clear();
     failure.clear();

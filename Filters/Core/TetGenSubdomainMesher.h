@@ -29,6 +29,10 @@ struct TetMeshingOptions
   // false: no -q, only the volume bound refines (the last resort of the
   // mesher for a subdomain where TetGen's quality refinement crashes)
   bool qualityRefinement = true;
+  // optional size field at the surface points (edge length wanted, > 0, one
+  // per point): TetGen -m, which interpolates it inside; the volume bound
+  // still applies. Empty: none.
+  std::vector<double> pointSizes;
   std::string extraSwitches;         // only O, S, T, V with numbers (what cannot break the contract)
   // per TetGen run, processor and wall time; 0: 2 s + 30 us of processor time
   // per expected tetrahedron (about 6x TetGen's speed), 60 s + 10 us of wall time

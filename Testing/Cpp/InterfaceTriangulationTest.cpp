@@ -159,6 +159,68 @@ TEST(InterfaceTriangulation, CoarseAndFineSquares)
   }
 }
 
+// A size field replaces the automatic sizing: edges grow with it from left
+// to right (0.02 at x = 0 to 0.2 at x = 1), boundary spacing 0.02 all round.
+TEST(InterfaceTriangulation, SizeFieldSetsTheEdgeLengths)
+{
+  PlanarRegion r = plane();
+  addLoop(r, square(0, 0, 1, 50, true));
+  Vec3 e1, e2; // the square's own axes, as addLoop placed it
+  planeBasis(r.normal, e1, e2);
+  InterfaceTriangulationOptions options;
+  options.sizeAt = [&](const Vec3& p) { return 0.02 + 0.18 * dot(p, e1); };
+  const auto result = triangulateInterface(r, options);
+  EXPECT_NEAR(check(r, result, 20.7), 1.0, 1e-12);
+  const auto& t = result.triangulation;
+  auto p = [&](Index i) { return i < static_cast<Index>(r.points.size()) ? r.points[i] : t.newPoints[i - r.points.size()]; };
+  std::size_t edges = 0, tooLong = 0;
+  double left = 0, right = 0;
+  std::size_t nLeft = 0, nRight = 0;
+  for (const auto& tri : t.triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Vec3 a = p(tri[k]), b = p(tri[(k + 1) % 3]);
+      const Vec3 middle = 0.5 * (a + b);
+      const double length = norm(a - b);
+      ++edges;
+      // the field bounds every edge (the mesher's sizes are a hard bound)
+      tooLong += length > 1.01 * options.sizeAt(middle) + 0.02 ? 1 : 0;
+      const double u = dot(middle, e1), v = dot(middle, e2);
+      if (u > 0.2 && u < 0.4 && v > 0.2 && v < 0.8)
+      {
+        left += length;
+        ++nLeft;
+      }
+      if (u > 0.6 && u < 0.8 && v > 0.2 && v < 0.8)
+      {
+        right += length;
+        ++nRight;
+      }
+    }
+  }
+  ASSERT_GT(nLeft, 0u);
+  ASSERT_GT(nRight, 0u);
+  EXPECT_EQ(tooLong, 0u) << "of " << edges << " edges";
+  // the field is 0.074 and 0.146 in the middle of the two bands
+  EXPECT_GT(right / nRight, 1.5 * left / nLeft);
+}
+
+// Inside a region the filters do not check the field: where it crosses 0
+// it is floored (1e-3 of the region's diagonal), not refined without end.
+TEST(InterfaceTriangulation, SizeFieldCrossingZeroInsideStaysBounded)
+{
+  PlanarRegion r = plane();
+  addLoop(r, square(0, 0, 1, 50, true));
+  Vec3 e1, e2;
+  planeBasis(r.normal, e1, e2);
+  InterfaceTriangulationOptions options;
+  options.sizeAt = [&](const Vec3& p) { return 0.02 - 0.18 * dot(p, e1); };
+  const auto result = triangulateInterface(r, options);
+  EXPECT_NEAR(check(r, result, 20.7), 1.0, 1e-12);
+  EXPECT_LT(result.triangulation.newPoints.size(), 200000u); // 26,046 measured
+}
+
 TEST(InterfaceTriangulation, HolesComponentsAndLShape)
 {
   PlanarRegion r = plane({ 0, 0, 1 }, { 0, 0, 2 });

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <set>
 
@@ -100,6 +101,52 @@ TEST(TetGenSubdomainMesher, WithoutQualityRefinementOnlyTheVolumeBoundRefines)
   {
     EXPECT_LE(tetVolume(r.mesh, t), 0.0005 * (1 + 1e-9));
   }
+}
+
+// Sizes at the surface points (TetGen -m): the tetrahedra follow them
+// inside, and sizes that are not one positive value per point are refused.
+TEST(TetGenSubdomainMesher, PointSizesGradeTheMesh)
+{
+  const TriangleSurface ball = icosphere({ 0, 0, 0 }, 1.0, 4);
+  TetMeshingOptions options;
+  options.maximumVolume = 0.01;
+  for (const Vec3& p : ball.points)
+  {
+    options.pointSizes.push_back(0.75 * 0.03 * std::pow(10.0, (p[2] + 1) / 2));
+  }
+  const TetMeshingResult r = meshClosedSurface(ball, options);
+  expectConformingMesh(ball, r, "graded by -m");
+  EXPECT_NE(r.switchesUsed.find('m'), std::string::npos) << r.switchesUsed;
+  double low = 0, high = 0;
+  std::size_t nLow = 0, nHigh = 0;
+  for (const auto& t : r.mesh.tets)
+  {
+    for (int i = 0; i < 4; ++i)
+    {
+      for (int j = i + 1; j < 4; ++j)
+      {
+        const Vec3 a = r.mesh.points[t[i]], b = r.mesh.points[t[j]];
+        const double z = 0.5 * (a[2] + b[2]);
+        if (z < -0.5)
+        {
+          low += norm(a - b);
+          ++nLow;
+        }
+        else if (z > 0.5)
+        {
+          high += norm(a - b);
+          ++nHigh;
+        }
+      }
+    }
+  }
+  // the field is 4.5 x larger at z = 0.75 than at z = -0.75
+  EXPECT_GT(high / nHigh, 2.0 * low / nLow);
+
+  options.pointSizes.pop_back();
+  EXPECT_NE(meshClosedSurface(ball, options).error.find("point sizes"), std::string::npos);
+  options.pointSizes.push_back(-1.0);
+  EXPECT_NE(meshClosedSurface(ball, options).error.find("point sizes"), std::string::npos);
 }
 
 TEST(TetGenSubdomainMesher, VolumeBoundIsRespected)
