@@ -41,9 +41,13 @@ def collective(comm, what, fn, *args):
         result = fn(*args)
     except (ptm_pieces.PieceError, SolveError, ValueError, KeyError) as e:
         err = f"{what}: {e}"
-    errors = [(r, e) for r, e in enumerate(comm.allgather(err)) if e]
-    if errors:
-        raise SolveError("; ".join(f"rank {r}: {e}" for r, e in errors))
+    by_message = {}
+    for r, e in enumerate(comm.allgather(err)):
+        if e:
+            by_message.setdefault(e, []).append(str(r))
+    if by_message:
+        raise SolveError("; ".join(f"rank{'s' if len(r) > 1 else ''} {','.join(r)}: {e}"
+                                   for e, r in by_message.items()))
     return result
 
 
@@ -470,6 +474,10 @@ def setup(args, comm, t):
     btri = collective(comm, "boundary", boundary_to_piece, piece)
     volume = outward_check(comm, piece, btri)
     pts, forces, area = boundary_loads(args, piece, btri, lo, hi)
+    if args.pressure == 0 and comm.allreduce(area) == 0:
+        raise SolveError("no load: --traction-faces/--traction-above selected no boundary triangle")
+    if args.pressure == 0 and not np.any(args.traction):
+        raise SolveError("no load: the traction is zero (give --traction tx,ty,tz)")
     b = A.createVecLeft()
     b.setValues(petsc_rows(gblock, np.repeat(pts, 3), np.tile([0, 1, 2], len(pts))),
                 forces.ravel(), addv=True)
