@@ -22,6 +22,8 @@ PACKAGES=(
   libgtest-dev clang libclang-rt-14-dev xvfb xauth
   # comparison peers and test geometry
   gmsh tetgen python3-meshio python3-matplotlib time
+  # the FEM solver on the pieces (Scripts/solve_elasticity.py): PETSc with MUMPS and GAMG
+  python3-petsc4py python3-mpi4py
 )
 
 missing=()
