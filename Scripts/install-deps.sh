@@ -22,6 +22,12 @@ PACKAGES=(
   libgtest-dev clang libclang-rt-14-dev xvfb xauth
   # comparison peers and test geometry
   gmsh tetgen python3-meshio python3-matplotlib time
+  # CAD input (STEP, IGES, BREP) through OpenCASCADE 7.6, and its sample
+  # files (occt-misc: /usr/share/opencascade/data), which the CAD tests read
+  libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
+  libocct-data-exchange-dev occt-misc
+  # OCCT's CMake targets name libtbb.so (TKernel is built with TBB)
+  libtbb-dev
 )
 
 missing=()

@@ -1,0 +1,124 @@
+// The CAD reader's core on the sample files Debian's occt-misc ships
+// (/usr/share/opencascade/data, LGPL-2.1 with the OCCT exception): the
+// tessellation must be one closed surface the input check accepts, with a
+// CAD face for every triangle; bad files must be refused by name.
+#include "CADTessellation.h"
+#include "SurfaceInputCheck.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <set>
+
+namespace
+{
+using namespace ptm;
+
+const std::string kData = "/usr/share/opencascade/data/";
+
+bool present(const std::string& path)
+{
+  return std::ifstream(path).is_open();
+}
+
+#define REQUIRE_FILE(path)                                                                          \
+  if (!present(path))                                                                               \
+  GTEST_SKIP() << path << " is missing: install occt-misc (Scripts/install-deps.sh)"
+
+void expectClosedWithFaces(const std::string& path, int minimumFaces, std::size_t warnings = 0)
+{
+  const CADSurface r = readCADSurface(path, CADReadOptions());
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_EQ(r.warnings.size(), warnings) << (r.warnings.empty() ? "" : r.warnings.front());
+  for (const std::string& w : r.warnings)
+  {
+    std::printf("warning: %s\n", w.c_str());
+  }
+  ASSERT_EQ(r.faceId.size(), r.surface.triangles.size());
+  std::set<Index> used(r.faceId.begin(), r.faceId.end());
+  EXPECT_GE(*used.begin(), 0);
+  EXPECT_LT(*used.rbegin(), r.faces);
+  EXPECT_GE(static_cast<int>(used.size()), minimumFaces);
+  const PreparedSurface checked = prepareInputSurface(r.surface, InputCheckOptions());
+  ASSERT_TRUE(checked.ok) << checked.error;
+  // merged by exact coordinates, oriented by the faces: nothing to repair
+  EXPECT_EQ(checked.counts.mergedPoints, 0u);
+  EXPECT_EQ(checked.orientation.reorientedTriangles, 0u);
+  EXPECT_EQ(checked.orientation.invertedShells, 0u);
+  std::printf("%s: %d solids, %d faces (%zu with triangles), %zu points, %zu triangles, volume %g, "
+              "deflection %g\n",
+    path.c_str(), r.solids, r.faces, used.size(), r.surface.points.size(), r.surface.triangles.size(),
+    checked.enclosedVolume, r.linearDeflection);
+}
+
+TEST(CADTessellation, StepScrewIsClosed)
+{
+  REQUIRE_FILE(kData + "step/screw.step");
+  expectClosedWithFaces(kData + "step/screw.step", 10);
+}
+
+TEST(CADTessellation, BrepPumpNutIsClosed)
+{
+  REQUIRE_FILE(kData + "occ/Pump_Nut.brep");
+  expectClosedWithFaces(kData + "occ/Pump_Nut.brep", 10);
+}
+
+TEST(CADTessellation, IgesHammerFacesAreSewnIntoSolids)
+{
+  // hammer.iges holds trimmed faces and no solid: they are sewn, with a warning
+  REQUIRE_FILE(kData + "iges/hammer.iges");
+  expectClosedWithFaces(kData + "iges/hammer.iges", 10, 1);
+}
+
+TEST(CADTessellation, IgesBearingDoesNotClose)
+{
+  // bearing.iges: faces that leave open shells (the corpus's 3758 boundary edges)
+  REQUIRE_FILE(kData + "iges/bearing.iges");
+  const CADSurface r = readCADSurface(kData + "iges/bearing.iges", CADReadOptions());
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("213 faces do not sew into a closed shell"), std::string::npos) << r.error;
+}
+
+TEST(CADTessellation, FinerDeflectionGivesMoreTriangles)
+{
+  REQUIRE_FILE(kData + "step/screw.step");
+  CADReadOptions fine;
+  fine.relativeLinearDeflection = 2e-4;
+  const CADSurface coarse = readCADSurface(kData + "step/screw.step", CADReadOptions());
+  const CADSurface dense = readCADSurface(kData + "step/screw.step", fine);
+  ASSERT_TRUE(coarse.ok && dense.ok);
+  EXPECT_GT(dense.surface.triangles.size(), coarse.surface.triangles.size());
+  EXPECT_NEAR(dense.linearDeflection, coarse.linearDeflection / 5, 1e-9 * coarse.linearDeflection);
+}
+
+TEST(CADTessellation, RefusesWithTheProblemNamed)
+{
+  CADSurface r = readCADSurface("/nonexistent/part.step", CADReadOptions());
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("cannot open"), std::string::npos) << r.error;
+
+  const std::string garbage = testing::TempDir() + "garbage.step";
+  std::ofstream(garbage) << "this is not ISO-10303-21\n";
+  r = readCADSurface(garbage, CADReadOptions());
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("cannot read it as a STEP file"), std::string::npos) << r.error;
+
+  const std::string text = testing::TempDir() + "part.txt";
+  std::ofstream(text) << "x\n";
+  r = readCADSurface(text, CADReadOptions());
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("unknown CAD extension 'txt'"), std::string::npos) << r.error;
+
+  REQUIRE_FILE(kData + "occ/face.brep");
+  r = readCADSurface(kData + "occ/face.brep", CADReadOptions());
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("no solid"), std::string::npos) << r.error;
+
+  CADReadOptions beyond;
+  beyond.solid = 7;
+  r = readCADSurface(kData + "occ/Pump_Nut.brep", beyond);
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("solid 7 does not exist"), std::string::npos) << r.error;
+}
+} // namespace
