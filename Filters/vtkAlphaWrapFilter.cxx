@@ -22,6 +22,17 @@
 #include <cmath>
 #include <exception>
 
+// The last wrap, its input and the properties it was made with.
+class vtkAlphaWrapCache
+{
+public:
+  bool valid = false;
+  ptm::TriangleSurface input;
+  double relativeAlpha = 0, relativeOffset = 0;
+  ptm::TriangleSurface wrapped;
+  std::vector<double> figures;
+};
+
 vtkStandardNewMacro(vtkAlphaWrapFilter);
 vtkCxxSetObjectMacro(vtkAlphaWrapFilter, Controller, vtkMultiProcessController);
 
@@ -58,6 +69,7 @@ void addValue(vtkFieldData* fd, const char* name, double value)
 } // namespace
 
 vtkAlphaWrapFilter::vtkAlphaWrapFilter()
+  : Cache(new vtkAlphaWrapCache)
 {
   this->SetController(vtkMultiProcessController::GetGlobalController());
 }
@@ -65,6 +77,7 @@ vtkAlphaWrapFilter::vtkAlphaWrapFilter()
 vtkAlphaWrapFilter::~vtkAlphaWrapFilter()
 {
   this->SetController(nullptr);
+  delete this->Cache;
 }
 
 int vtkAlphaWrapFilter::RequestInformation(
@@ -94,7 +107,6 @@ int vtkAlphaWrapFilter::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
   vtkMultiProcessController* controller = this->Controller;
-  const int rank = ptm::rankOf(controller);
 
   ptm::PropertyChecks checks("AlphaWrap");
   checks.Require(this->RelativeAlpha >= 1e-4 && this->RelativeAlpha <= 1.0, "RelativeAlpha",
@@ -114,11 +126,46 @@ int vtkAlphaWrapFilter::RequestData(
     return 1;
   }
 
+  // Reuse the last wrap when every rank has it for this input (collective).
+  vtkAlphaWrapCache& cache = *this->Cache;
+  std::vector<long long> reuse = { cache.valid && cache.relativeAlpha == this->RelativeAlpha &&
+      cache.relativeOffset == this->RelativeOffset && cache.input.points == whole.points &&
+      cache.input.triangles == whole.triangles
+    ? 1
+    : 0 };
+  ptm::allReduceMin(controller, reuse);
+  if (reuse[0] == 0 && !this->Wrap(whole))
+  {
+    return 0;
+  }
+  const int piece = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
+    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
+    : 0;
+  if (piece == 0)
+  {
+    surfaceToPolyData(cache.wrapped, output);
+  }
+  const std::vector<double>& figures = cache.figures;
+  vtkFieldData* fd = output->GetFieldData();
+  addValue(fd, ptm::arrays::WrapAlpha, figures[0]);
+  addValue(fd, ptm::arrays::WrapOffset, figures[1]);
+  addValue(fd, ptm::arrays::WrapToInputDistance, figures[2]);
+  addValue(fd, ptm::arrays::InputToWrapDistance, figures[3]);
+  addValue(fd, ptm::arrays::WrapSampleSpacing, figures[4]);
+  addValue(fd, ptm::arrays::WrapSeconds, figures[5]);
+  return 1;
+}
+
+bool vtkAlphaWrapFilter::Wrap(const ptm::TriangleSurface& whole)
+{
+  vtkMultiProcessController* controller = this->Controller;
+  vtkAlphaWrapCache& cache = *this->Cache;
+  cache.valid = false;
   // Rank 0 wraps; the others wait in the agreement below.
   this->SetProgressText("Wrapping");
   ptm::AlphaWrapResult wrap;
   std::string localError, message;
-  if (rank == 0)
+  if (ptm::rankOf(controller) == 0)
   {
     ptm::AlphaWrapOptions options;
     options.relativeAlpha = this->RelativeAlpha;
@@ -140,30 +187,18 @@ int vtkAlphaWrapFilter::RequestData(
   if (!ptm::agreeAllSucceeded(controller, localError.empty(), localError, message))
   {
     vtkErrorMacro("AlphaWrap failed: " << message);
-    output->Initialize();
-    return 0;
+    return false;
   }
   // Rank 0's wrap and figures to every rank (the others contribute nothing).
-  const ptm::TriangleSurface wrapped = ptm::allGatherSurface(controller, wrap.surface);
-  std::vector<double> figures = { wrap.alpha, wrap.offset, wrap.wrapToInput, wrap.inputToWrap,
-    wrap.sampleSpacing, wrap.wrapSeconds + wrap.distanceSeconds };
-  ptm::allReduceSum(controller, figures);
-
-  const int piece = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-    : 0;
-  if (piece == 0)
-  {
-    surfaceToPolyData(wrapped, output);
-  }
-  vtkFieldData* fd = output->GetFieldData();
-  addValue(fd, ptm::arrays::WrapAlpha, figures[0]);
-  addValue(fd, ptm::arrays::WrapOffset, figures[1]);
-  addValue(fd, ptm::arrays::WrapToInputDistance, figures[2]);
-  addValue(fd, ptm::arrays::InputToWrapDistance, figures[3]);
-  addValue(fd, ptm::arrays::WrapSampleSpacing, figures[4]);
-  addValue(fd, ptm::arrays::WrapSeconds, figures[5]);
-  return 1;
+  cache.wrapped = ptm::allGatherSurface(controller, wrap.surface);
+  cache.figures = { wrap.alpha, wrap.offset, wrap.wrapToInput, wrap.inputToWrap, wrap.sampleSpacing,
+    wrap.wrapSeconds + wrap.distanceSeconds };
+  ptm::allReduceSum(controller, cache.figures);
+  cache.input = whole;
+  cache.relativeAlpha = this->RelativeAlpha;
+  cache.relativeOffset = this->RelativeOffset;
+  cache.valid = true;
+  return true;
 }
 
 void vtkAlphaWrapFilter::PrintSelf(ostream& os, vtkIndent indent)

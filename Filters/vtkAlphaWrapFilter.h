@@ -16,6 +16,8 @@
  * rank) and sends the result to the others, so the output does not depend on
  * the number of ranks. Piece 0 of a request gets the whole wrap, other pieces
  * are empty (as the OFF reader does). Failure on any rank fails every rank.
+ * A re-execution for another piece with the same input and properties
+ * reuses the last wrap (all ranks agree on that) instead of wrapping again.
  */
 #ifndef vtkAlphaWrapFilter_h
 #define vtkAlphaWrapFilter_h
@@ -24,6 +26,11 @@
 #include "vtkPolyDataAlgorithm.h"
 
 class vtkMultiProcessController;
+class vtkAlphaWrapCache;
+namespace ptm
+{
+struct TriangleSurface;
+}
 
 class PARALLELTETMESHERFILTERS_EXPORT vtkAlphaWrapFilter : public vtkPolyDataAlgorithm
 {
@@ -65,6 +72,12 @@ protected:
   vtkMultiProcessController* Controller = nullptr;
 
 private:
+  // The last wrap and what it was made from: a new request for another
+  // piece re-executes the filter (ParaView asks for piece r of n, the cutter
+  // for piece 0 of 1), and must not wrap again (20 s on the OCCT bottle).
+  vtkAlphaWrapCache* Cache = nullptr;
+  bool Wrap(const ptm::TriangleSurface& whole); // collective; fills the cache
+
   vtkAlphaWrapFilter(const vtkAlphaWrapFilter&) = delete;
   void operator=(const vtkAlphaWrapFilter&) = delete;
 };
