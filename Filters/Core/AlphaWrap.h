@@ -28,10 +28,12 @@ namespace ptm
 {
 struct AlphaWrapOptions
 {
-  // Both relative to the input's bounding-box diagonal. alpha = 1/100: on
-  // the OCCT bottle (diag 120) this keeps the thread's flanks and the
-  // fillets, and wraps in about a second; 1/3000 for the offset keeps the
-  // wrap within 0.05 % of the diagonal of the input.
+  // Both relative to the input's bounding-box diagonal. Measured on the OCCT
+  // bottle tessellated at 1/200 of its diagonal (94; 3,450 triangles, two of
+  // them crossing): alpha 1/100 gives 43,102 triangles in 8.7 s, wrap within
+  // 0.73 of the input and the input within 0.65 of the wrap (the thread is
+  // rounded); 1/50 gives 19,940 triangles in 3.0 s, 1.40 and 0.87. The
+  // offset 1/3000 is where the wrap lies where it hugs the input.
   double relativeAlpha = 1.0 / 100.0;
   double relativeOffset = 1.0 / 3000.0;
 };
