@@ -31,7 +31,7 @@ struct AlphaWrapOptions
   // Both relative to the input's bounding-box diagonal. Measured on the OCCT
   // bottle tessellated at 1/200 of its diagonal (94; 3,450 triangles, two of
   // them crossing): alpha 1/100 gives 43,102 triangles in 8.7 s, wrap within
-  // 0.73 of the input and the input within 0.65 of the wrap (the thread is
+  // 0.79 of the input and the input within 0.63 of the wrap (the thread is
   // rounded); 1/50 gives 19,940 triangles in 3.0 s, 1.40 and 0.87. The
   // offset 1/3000 is where the wrap lies where it hugs the input.
   double relativeAlpha = 1.0 / 100.0;
