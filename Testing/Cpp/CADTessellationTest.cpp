@@ -7,6 +7,15 @@
 
 #include <gtest/gtest.h>
 
+#include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Shell.hxx>
+#include <TopoDS_Solid.hxx>
+
 #include <cstdio>
 #include <fstream>
 #include <set>
@@ -120,5 +129,39 @@ TEST(CADTessellation, RefusesWithTheProblemNamed)
   r = readCADSurface(kData + "occ/Pump_Nut.brep", beyond);
   EXPECT_FALSE(r.ok);
   EXPECT_NE(r.error.find("solid 7 does not exist"), std::string::npos) << r.error;
+}
+TEST(CADTessellation, RefusesASolidWithAnOpenShell)
+{
+  // a box whose shell lacks its last face, written as a BREP solid
+  const TopoDS_Shape box = BRepPrimAPI_MakeBox(1.0, 2.0, 3.0).Shape();
+  BRep_Builder builder;
+  TopoDS_Shell shell;
+  builder.MakeShell(shell);
+  int faces = 0;
+  for (TopExp_Explorer e(box, TopAbs_FACE); e.More(); e.Next())
+  {
+    if (++faces < 6)
+    {
+      builder.Add(shell, e.Current());
+    }
+  }
+  TopoDS_Solid solid;
+  builder.MakeSolid(solid);
+  builder.Add(solid, shell);
+  const std::string path = testing::TempDir() + "open_box.brep";
+  ASSERT_TRUE(BRepTools::Write(solid, path.c_str()));
+  const CADSurface r = readCADSurface(path, CADReadOptions());
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("solid 0 has an open shell"), std::string::npos) << r.error;
+
+  // the whole box is read, closed
+  const std::string closed = testing::TempDir() + "box.brep";
+  ASSERT_TRUE(BRepTools::Write(box, closed.c_str()));
+  const CADSurface good = readCADSurface(closed, CADReadOptions());
+  ASSERT_TRUE(good.ok) << good.error;
+  EXPECT_EQ(good.surface.triangles.size(), 12u);
+  const PreparedSurface checked = prepareInputSurface(good.surface, InputCheckOptions());
+  ASSERT_TRUE(checked.ok) << checked.error;
+  EXPECT_NEAR(checked.enclosedVolume, 6.0, 1e-12);
 }
 } // namespace
