@@ -275,13 +275,31 @@ CADSurface readCADSurface(const std::string& fileName, const CADReadOptions& opt
       out.error = msg.str();
       return out;
     }
-    std::vector<int> chosen;
+    // Empty solids exist (OCCT's Axis_of_bearing.brep: solid 14 of 18 has no
+    // shell): refused when chosen alone, left out with a warning from all.
+    std::vector<int> chosen, empty;
     for (int s = 0; s < out.solids; ++s)
     {
       if (options.solid == -1 || options.solid == s)
       {
-        chosen.push_back(s);
+        (TopExp_Explorer(solidMap(s + 1), TopAbs_FACE).More() ? chosen : empty).push_back(s);
       }
+    }
+    if (chosen.empty())
+    {
+      std::ostringstream msg;
+      msg << fileName << ": " << (options.solid >= 0 ? "solid " + std::to_string(options.solid) + " is"
+                                                     : std::string("all solids are"))
+          << " empty (no faces)";
+      out.error = msg.str();
+      return out;
+    }
+    if (!empty.empty())
+    {
+      std::ostringstream msg;
+      msg << fileName << ": left out " << empty.size() << " empty solids (no faces), e.g. solid "
+          << empty.front();
+      out.warnings.push_back(msg.str());
     }
     for (int s : chosen)
     {

@@ -17,7 +17,8 @@
 //
 // Refused with a message naming the file and the problem: an unknown
 // extension, a file OCCT cannot read, no solid (and faces that do not sew
-// into a closed shell), a solid index out of range, a
+// into a closed shell), an empty solid chosen alone (empty ones are left
+// out of "all" with a warning), a solid index out of range, a
 // shell that is open (free edges, before tessellation), a face that could
 // not be tessellated. Solids that touch each other (non-manifold as a whole)
 // only warn: the cutter refuses them and the alpha wrap repairs them.

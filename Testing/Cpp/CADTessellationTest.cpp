@@ -18,6 +18,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <algorithm>
 #include <set>
 
 namespace
@@ -163,5 +164,49 @@ TEST(CADTessellation, RefusesASolidWithAnOpenShell)
   const PreparedSurface checked = prepareInputSurface(good.surface, InputCheckOptions());
   ASSERT_TRUE(checked.ok) << checked.error;
   EXPECT_NEAR(checked.enclosedVolume, 6.0, 1e-12);
+}
+} // namespace
+
+namespace
+{
+using namespace ptm;
+
+TEST(CADTessellation, ChoosesOneSolidOrTakesAll)
+{
+  // the bearing axis: solids that share faces; all of them together are
+  // non-manifold (a warning), each one alone is a closed solid
+  const std::string path = kData + "occ/Axis_of_bearing.brep";
+  REQUIRE_FILE(path);
+  const CADSurface all = readCADSurface(path, CADReadOptions());
+  ASSERT_TRUE(all.ok) << all.error;
+  ASSERT_GT(all.solids, 1);
+  // solid 14 of its 18 has no shell at all
+  ASSERT_EQ(all.warnings.size(), 2u);
+  EXPECT_NE(all.warnings[0].find("left out 1 empty solids (no faces), e.g. solid 14"), std::string::npos)
+    << all.warnings[0];
+  EXPECT_NE(all.warnings[1].find("not shared by exactly two triangles"), std::string::npos) << all.warnings[1];
+  std::size_t triangles = 0;
+  for (int s = 0; s < all.solids; ++s)
+  {
+    CADReadOptions one;
+    one.solid = s;
+    const CADSurface r = readCADSurface(path, one);
+    if (s == 14)
+    {
+      EXPECT_FALSE(r.ok);
+      EXPECT_NE(r.error.find("solid 14 is empty (no faces)"), std::string::npos) << r.error;
+      continue;
+    }
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_TRUE(r.warnings.empty()) << "solid " << s << ": " << r.warnings.front();
+    const PreparedSurface checked = prepareInputSurface(r.surface, InputCheckOptions());
+    EXPECT_TRUE(checked.ok) << "solid " << s << ": " << checked.error;
+    // face ids index the whole file's face map, whichever solid is read
+    EXPECT_LT(*std::max_element(r.faceId.begin(), r.faceId.end()), all.faces);
+    triangles += r.surface.triangles.size();
+  }
+  std::printf("%s: %d solids, %zu triangles together, %zu one by one\n", path.c_str(), all.solids,
+    all.surface.triangles.size(), triangles);
+  EXPECT_EQ(triangles, all.surface.triangles.size());
 }
 } // namespace
