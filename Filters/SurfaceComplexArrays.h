@@ -24,5 +24,20 @@ constexpr const char* MaximumImbalance = "MaximumImbalance";       // double
 constexpr const char* InputRepairs = "InputRepairs";               // strings: repairs of the input check
 constexpr const char* AlignedCuts = "AlignedCuts";                 // 2 ints: cuts turned parallel to an earlier line, and through it
 constexpr const char* InputMeanEdgeLength = "InputMeanEdgeLength"; // double: the input surface's resolution
+
+// CAD input (vtkCADSurfaceReader): the CAD face every triangle came from
+constexpr const char* CADFaceId = "CADFaceId"; // cell data, vtkIdType: index in the TopExp face map
+// field data of the complex, vtkIdType per input triangle (by SourceFaceId):
+// its CADFaceId, carried by every stage so the mesher can put CADFaceId on
+// its boundary port
+constexpr const char* SourceFaceCADFaceId = "SourceFaceCADFaceId";
+
+// field data of vtkAlphaWrapFilter's output (absolute lengths)
+constexpr const char* WrapAlpha = "WrapAlpha";
+constexpr const char* WrapOffset = "WrapOffset";
+constexpr const char* WrapToInputDistance = "WrapToInputDistance"; // largest, wrap to input
+constexpr const char* InputToWrapDistance = "InputToWrapDistance"; // largest, input to wrap
+constexpr const char* WrapSampleSpacing = "WrapSampleSpacing";     // the distances are exact to within this
+constexpr const char* WrapSeconds = "WrapSeconds";                 // wrapping and measuring, on rank 0
 } // namespace ptm::arrays
 #endif

@@ -277,7 +277,8 @@ int vtkInterfaceTriangulator::RequestData(
   // carry the cutter's own facts through
   if (input)
   {
-    for (const char* name : { ptm::arrays::BalanceCriterionName, ptm::arrays::MaximumImbalance })
+    for (const char* name : { ptm::arrays::BalanceCriterionName, ptm::arrays::MaximumImbalance,
+           ptm::arrays::SourceFaceCADFaceId })
     {
       if (vtkAbstractArray* a = input->GetFieldData()->GetAbstractArray(name))
       {

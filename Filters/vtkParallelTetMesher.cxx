@@ -1,5 +1,6 @@
 #include "vtkParallelTetMesher.h"
 
+#include "CADFaceIds.h"
 #include "GlobalMeshNumbering.h"
 #include "PolyDataConversion.h"
 #include "PropertyChecks.h"
@@ -671,6 +672,7 @@ int vtkParallelTetMesher::RequestData(
   this->SetProgressText("Assembling");
   assembleVolume(owned, totals, piece, lowest, rank, output);
   assembleBoundary(owned, totals, boundary);
+  ptm::addBoundaryCADFaceIds(input, boundary); // CAD face of every boundary triangle
   addTotals(piece, owned, totals, output->GetFieldData());
   // the same totals on the small boundary port, so a summary can be fetched
   // without gathering the volume mesh onto one process

@@ -196,7 +196,8 @@ int vtkSurfaceRelaxer::RequestData(
     for (const char* name : { "InterfaceNewPoints", "InterfaceTrianglesBelowMinimumAngle",
            "InterfaceTrianglesBelowMinimumAngleAwayFromBoundary", "EncroachedBoundarySegments",
            "InterfaceMinimumAngle",
-           ptm::arrays::BalanceCriterionName, ptm::arrays::MaximumImbalance })
+           ptm::arrays::BalanceCriterionName, ptm::arrays::MaximumImbalance,
+           ptm::arrays::SourceFaceCADFaceId })
     {
       if (vtkAbstractArray* a = input->GetFieldData()->GetAbstractArray(name))
       {

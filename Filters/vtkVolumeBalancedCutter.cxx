@@ -1,5 +1,6 @@
 #include "vtkVolumeBalancedCutter.h"
 
+#include "CADFaceIds.h"
 #include "PolyDataConversion.h"
 #include "PropertyChecks.h"
 #include "RankCollectives.h"
@@ -9,6 +10,7 @@
 
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkIntArray.h"
 #include "vtkInformationVector.h"
@@ -87,6 +89,9 @@ int vtkVolumeBalancedCutter::RequestData(
   this->SetProgressText("Gathering the surface");
   const ptm::TriangleSurface local = ptm::triangleSurfaceFromPolyData(input);
   const ptm::TriangleSurface surface = ptm::wholeSurfaceOnEveryRank(controller, local);
+  // the CAD face of every input triangle, for the mesher's boundary (CADFaceIds.h)
+  const vtkSmartPointer<vtkIdTypeArray> cadFaces =
+    ptm::gatherCADFaceTable(controller, input, local.triangles.size(), surface.triangles.size());
   if (ptm::agreeAnyAborted(controller, this))
   {
     output->Initialize();
@@ -189,6 +194,10 @@ int vtkVolumeBalancedCutter::RequestData(
     repairs->InsertNextValue(warning);
   }
   fd->AddArray(repairs);
+  if (cadFaces)
+  {
+    fd->AddArray(cadFaces);
+  }
 
   this->UpdateProgress(1.0);
   return 1;

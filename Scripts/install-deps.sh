@@ -24,6 +24,12 @@ PACKAGES=(
   gmsh tetgen python3-meshio python3-matplotlib time
   # the FEM solver on the pieces (Scripts/solve_elasticity.py): PETSc with MUMPS and GAMG
   python3-petsc4py python3-mpi4py
+  # CAD input (STEP, IGES, BREP) through OpenCASCADE 7.6, and its sample
+  # files (occt-misc: /usr/share/opencascade/data), which the CAD tests read
+  libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev
+  libocct-data-exchange-dev occt-misc
+  # OCCT's CMake targets name libtbb.so (TKernel is built with TBB)
+  libtbb-dev
 )
 
 missing=()

@@ -3,8 +3,14 @@
     mpiexec -n N pvbatch Scripts/tetmesh.py INPUT -o OUT.pvtu [--subdomains K]
         [--size H] [--strategy RecursiveBisection|ParallelPlanes]
         [--direction Inertia|LongestExtent|X|Y|Z] [--json SUMMARY.json]
+        [--wrap [--wrap-alpha A] [--wrap-offset D]] [--solid I] [--cad-deflection F]
+        [--cad-angular-deflection A] [--save-surface SURFACE.off]
 
-Reads any surface ParaView reads (STL, OFF, PLY, OBJ, VTP...), runs
+Reads any surface ParaView reads (STL, OFF, PLY, OBJ, VTP...) or the solids
+of a CAD file (STEP, IGES, BREP: the plugin's CAD Surface Reader, whose
+CADFaceId reaches OUT_boundary.pvtp), optionally wraps a dirty surface
+(open, non-manifold, self-intersecting) into a closed one (--wrap: Alpha
+Wrap, reporting how far the wrap strays from the input), runs
 VolumeBalancedCutter, InterfaceTriangulator, SurfaceRelaxer and
 ParallelTetMesher, writes the pieces with ParaView's parallel writer
 (OUT.pvtu plus OUT_boundary.pvtp with the outer boundary triangles) and
@@ -46,6 +52,20 @@ def parse_arguments(argv):
                    help="KeepSurface (default): the surface stays exactly the same; SmoothSurface: may move it")
     p.add_argument("--max-surface-deviation", type=float, default=0.01,
                    help="SmoothSurface: largest surface move, relative to the bounding-box diagonal (default 0.01)")
+    p.add_argument("--wrap", action="store_true",
+                   help="mesh a closed alpha wrap of the surface (for open, non-manifold or self-intersecting input)")
+    p.add_argument("--wrap-alpha", type=float, default=0.01,
+                   help="--wrap: alpha, as a fraction of the bounding-box diagonal (default 0.01)")
+    p.add_argument("--wrap-offset", type=float, default=1.0 / 3000,
+                   help="--wrap: offset from the input, as a fraction of the diagonal (default 1/3000)")
+    p.add_argument("--solid", type=int, default=-1,
+                   help="CAD input: the solid to mesh, 0-based (default -1: all, as separate shells)")
+    p.add_argument("--cad-deflection", type=float, default=1e-3,
+                   help="CAD input: tessellation deflection as a fraction of the diagonal (default 0.001)")
+    p.add_argument("--cad-angular-deflection", type=float, default=0.5,
+                   help="CAD input: tessellation angular deflection in radians (default 0.5)")
+    p.add_argument("--save-surface", default=None,
+                   help="also write the surface that was meshed (after reading and wrapping) as OFF")
     p.add_argument("--plugin", default=None, help="path of ParallelTetMesher.so (default: from the build tree)")
     p.add_argument("--json", default=None, help="also write the summary as JSON")
     return p.parse_args(argv)
@@ -92,6 +112,30 @@ class ErrorLog:
         return proxy
 
 
+CAD_EXTENSIONS = (".step", ".stp", ".iges", ".igs", ".brep")
+
+
+def write_off(polydata, path):
+    """The triangles of a vtkPolyData (rank 0's whole surface) as OFF, 17 digits."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+
+    points = vtk_to_numpy(polydata.GetPoints().GetData())
+    triangles = vtk_to_numpy(polydata.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+    folder = os.path.dirname(os.path.abspath(path))
+    os.makedirs(folder, exist_ok=True)
+    with open(path, "w") as f:
+        f.write("OFF\n%d %d 0\n" % (len(points), len(triangles)))
+        for p in points:
+            f.write("%.17g %.17g %.17g\n" % tuple(p))
+        for t in triangles:
+            f.write("3 %d %d %d\n" % tuple(t))
+
+
+def field_value(polydata, name):
+    array = polydata.GetFieldData().GetArray(name)
+    return float(array.GetValue(0)) if array is not None and array.GetNumberOfTuples() else None
+
+
 def main(argv):
     args = parse_arguments(argv)
     if not os.path.isfile(args.input):
@@ -118,9 +162,29 @@ def main(argv):
     reader = simple.OpenDataFile(args.input)
     if reader is None:
         fail("ParaView has no reader for '%s'" % args.input)
+    if args.input.lower().endswith(CAD_EXTENSIONS) and "SolidIndex" in reader.ListProperties():
+        reader.SolidIndex = args.solid
+        reader.RelativeLinearDeflection = args.cad_deflection
+        reader.AngularDeflection = args.cad_angular_deflection
     run("read", reader)
+    surface = reader
+    if args.wrap:
+        surface = run("wrap", simple.AlphaWrap(Input=reader, RelativeAlpha=args.wrap_alpha,
+                                               RelativeOffset=args.wrap_offset))
     cutter = run("cut", simple.VolumeBalancedCutter(
-        Input=reader, NumberOfSubdomains=args.subdomains, Strategy=args.strategy, Direction=args.direction))
+        Input=surface, NumberOfSubdomains=args.subdomains, Strategy=args.strategy, Direction=args.direction))
+    # rank 0's copy of the surface the cutter took (every rank asked for the whole)
+    meshed = surface.GetClientSideObject().GetOutputDataObject(0)
+    wrap_report = None
+    if args.wrap:
+        wrap_report = {name: field_value(meshed, field) for name, field in (
+            ("alpha", "WrapAlpha"), ("offset", "WrapOffset"),
+            ("largest_distance_wrap_to_input", "WrapToInputDistance"),
+            ("largest_distance_input_to_wrap", "InputToWrapDistance"),
+            ("sample_spacing", "WrapSampleSpacing"), ("seconds", "WrapSeconds"))}
+        wrap_report["triangles"] = int(meshed.GetNumberOfPolys())
+    if args.save_surface:
+        write_off(meshed, args.save_surface)
     interfaces = run("interface", simple.InterfaceTriangulator(Input=cutter, MaximumEdgeLength=args.size,
                                                                  SizeExpression=args.size_expression))
     relaxed = run("relax", simple.SurfaceRelaxer(Input=interfaces, NumberOfIterations=args.relax_iterations,
@@ -184,6 +248,13 @@ def main(argv):
             "largest_deviation": float(fd.GetArray("BoundaryLargestDeviation").GetValue(0)),
         },
     }
+    if wrap_report is not None:
+        summary["wrap"] = wrap_report
+        print("tetmesh: wrapped (alpha %.4g, offset %.4g) into %d triangles; largest distance wrap to input "
+              "%.4g, input to wrap %.4g (sampled every %.3g)" % (
+                  wrap_report["alpha"], wrap_report["offset"], wrap_report["triangles"],
+                  wrap_report["largest_distance_wrap_to_input"], wrap_report["largest_distance_input_to_wrap"],
+                  wrap_report["sample_spacing"]))
     print("tetmesh: %d tetrahedra, %d points, %d subdomains on %d ranks (%s per rank)" % (
         summary["tetrahedra"], summary["points"], summary["subdomains"], ranks, subdomains_per_rank))
     print("tetmesh: balance max/mean tetrahedra per rank %.3f" % summary["balance_max_over_mean"])

@@ -89,11 +89,19 @@ PreparedSurface prepareInputSurface(const TriangleSurface& input, const InputChe
   n.inputPoints = input.points.size();
   n.inputTriangles = input.triangles.size();
   std::vector<std::string> problems;
+  // Open, non-manifold, unorientable and self-intersecting surfaces are what
+  // the alpha wrap repairs (AlphaWrap.h): the refusal says how to turn it on.
+  bool wrappable = false;
   auto fail = [&]() {
     std::ostringstream msg;
     for (std::size_t i = 0; i < problems.size(); ++i)
     {
       msg << (i ? "; " : "") << problems[i];
+    }
+    if (wrappable)
+    {
+      msg << " (repair the model, or mesh a closed wrap of it: tetmesh.py --wrap, or the Alpha Wrap "
+             "filter before the cutter)";
     }
     out.error = msg.str();
     out.ok = false;
@@ -312,6 +320,7 @@ PreparedSurface prepareInputSurface(const TriangleSurface& input, const InputChe
     std::ostringstream msg;
     msg << "the surface is open: " << plural(n.boundaryEdges, "boundary edge", "boundary edges")
         << " (used by one triangle), e.g. " << edgeAt(firstBoundary);
+    wrappable = true;
     if (!removed.empty())
     {
       std::size_t alongRemoved = 0;
@@ -343,6 +352,7 @@ PreparedSurface prepareInputSurface(const TriangleSurface& input, const InputChe
         << " (used by more than two triangles, up to " << worstUse << "), e.g. "
         << edgeAt(firstNonManifold);
     problems.push_back(msg.str());
+    wrappable = true;
   }
   // A vertex is manifold when its triangles form one fan: join the corners
   // of two triangles that share a manifold edge at both ends of that edge,
@@ -392,6 +402,7 @@ PreparedSurface prepareInputSurface(const TriangleSurface& input, const InputChe
       problems.push_back(plural(n.nonManifoldVertices, "non-manifold vertex", "non-manifold vertices") +
         " (where separate sheets of the surface touch in a point), e.g. at " +
         at(s.points[firstVertex]));
+      wrappable = true;
     }
     else
     {
@@ -408,6 +419,7 @@ PreparedSurface prepareInputSurface(const TriangleSurface& input, const InputChe
   if (!oriented.ok)
   {
     problems.push_back(oriented.error);
+    wrappable = true;
     return fail();
   }
   out.orientation = oriented.report;
@@ -442,6 +454,7 @@ PreparedSurface prepareInputSurface(const TriangleSurface& input, const InputChe
           << " of triangles cross, e.g. input triangles " << source[si.firstTriangle] << " and "
           << source[si.secondTriangle] << " near " << at(s.points[a[0]]);
       problems.push_back(msg.str());
+      wrappable = true;
       return fail();
     }
   }
