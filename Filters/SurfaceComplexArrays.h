@@ -18,6 +18,7 @@ constexpr const char* NumberOfSubdomains = "NumberOfSubdomains";   // int
 constexpr const char* SubdomainRank = "SubdomainRank";             // int per subdomain: the rank that owns it
 constexpr const char* SubdomainVolume = "SubdomainVolume";         // double per subdomain
 constexpr const char* SubdomainMeasure = "SubdomainMeasure";       // double per subdomain, by the balance criterion
+constexpr const char* SubdomainPredictedTetrahedra = "SubdomainPredictedTetrahedra"; // double per subdomain, with a size field
 constexpr const char* GlobalPointCount = "GlobalPointCount";       // vtkIdType: points of the whole complex
 constexpr const char* BalanceCriterionName = "BalanceCriterion";   // string
 constexpr const char* MaximumImbalance = "MaximumImbalance";       // double

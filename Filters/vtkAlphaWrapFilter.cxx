@@ -1,6 +1,7 @@
 #include "vtkAlphaWrapFilter.h"
 
 #include "AlphaWrap.h"
+#include "PipelineRequests.h"
 #include "PolyDataConversion.h"
 #include "PropertyChecks.h"
 #include "RankCollectives.h"
@@ -83,7 +84,7 @@ vtkAlphaWrapFilter::~vtkAlphaWrapFilter()
 int vtkAlphaWrapFilter::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  outputVector->GetInformationObject(0)->Set(vtkAlgorithm::CAN_HANDLE_PIECE_REQUEST(), 1);
+  ptm::announceAnyPiece(outputVector);
   return 1;
 }
 
@@ -92,10 +93,7 @@ int vtkAlphaWrapFilter::RequestInformation(
 int vtkAlphaWrapFilter::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  ptm::requestWholeInput(inputVector);
   return 1;
 }
 
@@ -138,9 +136,7 @@ int vtkAlphaWrapFilter::RequestData(
   {
     return 0;
   }
-  const int piece = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-    : 0;
+  const int piece = ptm::requestedPiece(outInfo);
   if (piece == 0)
   {
     surfaceToPolyData(cache.wrapped, output);

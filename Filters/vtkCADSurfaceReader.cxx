@@ -1,6 +1,7 @@
 #include "vtkCADSurfaceReader.h"
 
 #include "CADTessellation.h"
+#include "PipelineRequests.h"
 #include "SurfaceComplexArrays.h"
 
 #include "vtkCellArray.h"
@@ -26,18 +27,13 @@ vtkCADSurfaceReader::vtkCADSurfaceReader()
 
 int vtkCADSurfaceReader::CanReadFile(const char* fileName)
 {
-  if (!fileName || !*fileName)
-  {
-    return 0;
-  }
-  std::ifstream in(fileName);
-  return in.is_open() ? 1 : 0;
+  return ptm::fileOpens(fileName);
 }
 
 int vtkCADSurfaceReader::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  outputVector->GetInformationObject(0)->Set(vtkAlgorithm::CAN_HANDLE_PIECE_REQUEST(), 1);
+  ptm::announceAnyPiece(outputVector);
   return 1;
 }
 
@@ -48,9 +44,7 @@ int vtkCADSurfaceReader::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
   this->LastError.clear();
-  const int piece = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-    : 0;
+  const int piece = ptm::requestedPiece(outInfo);
   if (piece > 0)
   {
     return 1; // the whole surface lives on piece 0

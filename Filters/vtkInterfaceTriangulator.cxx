@@ -1,6 +1,7 @@
 #include "vtkInterfaceTriangulator.h"
 
 #include "InterfaceTriangulation.h"
+#include "PipelineRequests.h"
 #include "PolyDataConversion.h"
 #include "PropertyChecks.h"
 #include "RankCollectives.h"
@@ -55,8 +56,7 @@ vtkInterfaceTriangulator::~vtkInterfaceTriangulator()
 int vtkInterfaceTriangulator::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  outputVector->GetInformationObject(0)->Set(
-    vtkAlgorithm::CAN_HANDLE_PIECE_REQUEST(), 1);
+  ptm::announceAnyPiece(outputVector);
   return 1;
 }
 

@@ -1,6 +1,7 @@
 #include "vtkOFFSurfaceReader.h"
 
 #include "OffFormat.h"
+#include "PipelineRequests.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -25,19 +26,14 @@ vtkOFFSurfaceReader::vtkOFFSurfaceReader()
 
 int vtkOFFSurfaceReader::CanReadFile(const char* fileName)
 {
-  if (!fileName || !*fileName)
-  {
-    return 0;
-  }
-  std::ifstream in(fileName);
-  return in.is_open() ? 1 : 0;
+  return ptm::fileOpens(fileName);
 }
 
 int vtkOFFSurfaceReader::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   // Any number of pieces: piece 0 gets the surface, the others stay empty.
-  outputVector->GetInformationObject(0)->Set(vtkAlgorithm::CAN_HANDLE_PIECE_REQUEST(), 1);
+  ptm::announceAnyPiece(outputVector);
   return 1;
 }
 
@@ -49,9 +45,7 @@ int vtkOFFSurfaceReader::RequestData(
   output->Initialize();
   this->LastError.clear();
 
-  const int piece = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-    : 0;
+  const int piece = ptm::requestedPiece(outInfo);
   if (piece > 0)
   {
     return 1; // the whole surface lives on piece 0; this piece is empty

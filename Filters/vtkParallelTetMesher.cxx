@@ -2,11 +2,12 @@
 
 #include "CADFaceIds.h"
 #include "GlobalMeshNumbering.h"
+#include "PipelineRequests.h"
 #include "PolyDataConversion.h"
 #include "PropertyChecks.h"
 #include "RankCollectives.h"
-#include "SubdomainSurface.h"
 #include "SizeExpression.h"
+#include "SubdomainSurface.h"
 #include "SurfaceComplexArrays.h"
 #include "SurfaceRefinement.h"
 #include "TetGenSubdomainMesher.h"
@@ -517,11 +518,7 @@ int vtkParallelTetMesher::FillOutputPortInformation(int port, vtkInformation* in
 int vtkParallelTetMesher::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  for (int port = 0; port < 2; ++port)
-  {
-    outputVector->GetInformationObject(port)->Set(
-      vtkAlgorithm::CAN_HANDLE_PIECE_REQUEST(), 1);
-  }
+  ptm::announceAnyPiece(outputVector);
   return 1;
 }
 

@@ -1,6 +1,7 @@
 #include "vtkSurfaceRelaxer.h"
 
 #include "ComplexGather.h"
+#include "PipelineRequests.h"
 #include "PolyDataConversion.h"
 #include "PropertyChecks.h"
 #include "RankCollectives.h"
@@ -66,8 +67,7 @@ vtkSurfaceRelaxer::~vtkSurfaceRelaxer()
 int vtkSurfaceRelaxer::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  outputVector->GetInformationObject(0)->Set(
-    vtkAlgorithm::CAN_HANDLE_PIECE_REQUEST(), 1);
+  ptm::announceAnyPiece(outputVector);
   return 1;
 }
 

@@ -1,9 +1,12 @@
 #include "vtkVolumeBalancedCutter.h"
 
 #include "CADFaceIds.h"
+#include "PipelineRequests.h"
 #include "PolyDataConversion.h"
 #include "PropertyChecks.h"
 #include "RankCollectives.h"
+#include "PredictedCost.h"
+#include "SizeExpression.h"
 #include "SubdomainAssignment.h"
 #include "SurfaceComplexArrays.h"
 #include "VolumeBalancedDecomposition.h"
@@ -21,6 +24,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
 
+#include <cmath>
 #include <exception>
 #include <sstream>
 
@@ -40,22 +44,15 @@ vtkVolumeBalancedCutter::~vtkVolumeBalancedCutter()
 int vtkVolumeBalancedCutter::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  outputVector->GetInformationObject(0)->Set(
-    vtkAlgorithm::CAN_HANDLE_PIECE_REQUEST(), 1);
+  ptm::announceAnyPiece(outputVector);
   return 1;
 }
 
-// Every rank asks its upstream for the whole surface (piece 0 of 1): a reader
-// then reads the file on every rank, so a bad file fails on every rank alike.
-// (When an upstream fails on one rank only, VTK's executive skips this
-// filter on that rank alone and the others would wait for it forever.)
+// Every rank asks its upstream for the whole surface (PipelineRequests.h says why).
 int vtkVolumeBalancedCutter::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  ptm::requestWholeInput(inputVector);
   return 1;
 }
 
@@ -78,11 +75,15 @@ int vtkVolumeBalancedCutter::RequestData(
     "BalanceTolerance", "lie in [1e-6, 0.5]", this->BalanceTolerance);
   checks.Require(this->PlaneAlignmentAngle >= 0 && this->PlaneAlignmentAngle <= 45,
     "PlaneAlignmentAngle", "lie in [0, 45] degrees", this->PlaneAlignmentAngle);
+  checks.Require(this->MaximumSize >= 0 && std::isfinite(this->MaximumSize), "MaximumSize",
+    "be 0 (automatic) or a positive length", this->MaximumSize);
   checks.Require(this->SelfIntersectionCheckLimit >= 0, "SelfIntersectionCheckLimit",
     "be a number of triangles, 0 or more", this->SelfIntersectionCheckLimit);
-  if (!checks.Ok())
+  std::string sizeError;
+  const ptm::SizeFunction size = ptm::sizeFunctionOf(this->SizeExpression, sizeError);
+  if (!checks.Ok() || !sizeError.empty())
   {
-    vtkErrorMacro(<< checks.Message());
+    vtkErrorMacro(<< (checks.Ok() ? "VolumeBalancedCutter: " + sizeError : checks.Message()));
     output->Initialize();
     return 0;
   }
@@ -154,7 +155,29 @@ int vtkVolumeBalancedCutter::RequestData(
   ptm::ComplexPiece piece;
   piece.subdomainVolume = result.subdomainVolume;
   piece.subdomainMeasure = result.subdomainMeasure;
-  piece.subdomainRank = ptm::assignSubdomainsToRanks(result.subdomainMeasure, ranks);
+  // every rank has the whole complex, so every rank predicts the same costs
+  // (and refuses the same field: it must be positive on the whole surface)
+  if (size)
+  {
+    std::vector<double> sizes;
+    if (!ptm::sizesAt(size, this->SizeExpression, result.complex.points, sizes, localError))
+    {
+      vtkErrorMacro("VolumeBalancedCutter failed: " << localError);
+      output->Initialize();
+      return 0;
+    }
+  }
+  // the mesher never goes above its MaximumVolume's edge (automatic: the
+  // input's mean edge), so neither does the prediction
+  const double cap = this->MaximumSize > 0 ? this->MaximumSize : result.inputMeanEdgeLength;
+  const ptm::SizeFunction capped = [&size, cap](const ptm::Vec3& p) {
+    const double h = size(p);
+    return cap > 0 && h > cap ? cap : h;
+  };
+  const std::vector<double> predicted =
+    size ? ptm::predictCost(result.complex, capped).tetrahedra : std::vector<double>();
+  piece.subdomainRank =
+    ptm::assignSubdomainsToRanks(size ? predicted : result.subdomainMeasure, ranks);
   piece.globalPointCount = static_cast<ptm::Index>(result.complex.points.size());
   piece.inputMeanEdgeLength = result.inputMeanEdgeLength;
   piece.complex = std::move(result.complex);
@@ -173,6 +196,16 @@ int vtkVolumeBalancedCutter::RequestData(
   ptm::complexToPolyData(piece, mine, output);
 
   vtkFieldData* fd = output->GetFieldData();
+  if (size)
+  {
+    vtkNew<vtkDoubleArray> predictedArray;
+    predictedArray->SetName(ptm::arrays::SubdomainPredictedTetrahedra);
+    for (double n : predicted)
+    {
+      predictedArray->InsertNextValue(n);
+    }
+    fd->AddArray(predictedArray);
+  }
   vtkNew<vtkStringArray> criterion;
   criterion->SetName(ptm::arrays::BalanceCriterionName);
   criterion->InsertNextValue(ptm::toString(options.criterion));

@@ -21,6 +21,8 @@
 #include "ParallelTetMesherFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
 
+#include <string>
+
 class vtkMultiProcessController;
 
 class PARALLELTETMESHERFILTERS_EXPORT vtkVolumeBalancedCutter : public vtkPolyDataAlgorithm
@@ -108,6 +110,28 @@ public:
   ///@}
 
   ///@{
+  /// A size field (the edge length wanted at x, y, z, in the syntax of
+  /// ParaView's Calculator), the one given to InterfaceTriangulator and
+  /// ParallelTetMesher. Empty (default): the subdomains go to the ranks by
+  /// their balance measure. Set: by the tetrahedra the field predicts in
+  /// each (the field data SubdomainPredictedTetrahedra), so a rank meshing
+  /// a finely sized region gets fewer subdomains. The cuts still balance
+  /// the BalanceCriterion; over-decompose (K several times the ranks) so
+  /// there is something to share out.
+  vtkSetMacro(SizeExpression, std::string);
+  vtkGetMacro(SizeExpression, std::string);
+  ///@}
+
+  ///@{
+  /// With SizeExpression: the largest size the mesher will use, as its
+  /// MaximumVolume sets it (the edge of that regular tetrahedron); 0
+  /// (default) is the mesher's automatic size, the input's mean edge. The
+  /// predicted cost takes the field no larger than this.
+  vtkSetMacro(MaximumSize, double);
+  vtkGetMacro(MaximumSize, double);
+  ///@}
+
+  ///@{
   /// The controller (default: the global one).
   void SetController(vtkMultiProcessController*);
   vtkGetObjectMacro(Controller, vtkMultiProcessController);
@@ -129,6 +153,8 @@ protected:
   double PlaneAlignmentAngle = 15.0;
   vtkTypeBool CheckSelfIntersections = 1;
   vtkIdType SelfIntersectionCheckLimit = 2000000;
+  std::string SizeExpression;
+  double MaximumSize = 0.0;
   vtkMultiProcessController* Controller = nullptr;
 
 private:

@@ -172,7 +172,8 @@ def main(argv):
         surface = run("wrap", simple.AlphaWrap(Input=reader, RelativeAlpha=args.wrap_alpha,
                                                RelativeOffset=args.wrap_offset))
     cutter = run("cut", simple.VolumeBalancedCutter(
-        Input=surface, NumberOfSubdomains=args.subdomains, Strategy=args.strategy, Direction=args.direction))
+        Input=surface, NumberOfSubdomains=args.subdomains, Strategy=args.strategy, Direction=args.direction,
+        SizeExpression=args.size_expression, MaximumSize=args.size))
     # rank 0's copy of the surface the cutter took (every rank asked for the whole)
     meshed = surface.GetClientSideObject().GetOutputDataObject(0)
     wrap_report = None

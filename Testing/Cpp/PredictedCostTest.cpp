@@ -1,0 +1,83 @@
+#include "PredictedCost.h"
+#include "TestSurfaces.h"
+#include "VolumeBalancedDecomposition.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+using namespace ptm;
+using namespace ptm::test;
+
+namespace
+{
+SurfaceComplex boxInFour(CutStrategy strategy)
+{
+  DecompositionOptions options;
+  options.numberOfSubdomains = 4;
+  options.strategy = strategy;
+  options.direction = CutDirection::X;
+  const DecompositionResult r = decomposeVolumeBalanced(subdividedBox({ 0, 0, 0 }, { 2, 1, 1 }, 6), options);
+  EXPECT_TRUE(r.ok) << r.error;
+  return r.complex;
+}
+} // namespace
+
+// A constant size: every subdomain's volume times 6 sqrt(2) / h^3, and its
+// boundary area times 4 / (sqrt(3) h^2), exactly (the field along x is
+// linear, which the rules integrate exactly). The slabs of the 2 x 1 x 1
+// box cut in four along x each have volume 0.5 and boundary area 4.
+TEST(PredictedCost, ConstantSizeGivesVolumeAndAreaOverTheElements)
+{
+  const SurfaceComplex c = boxInFour(CutStrategy::ParallelPlanes);
+  const PredictedCost cost = predictCost(c, [](const Vec3&) { return 0.1; });
+  const std::vector<double> volume = subdomainVolumes(c);
+  ASSERT_EQ(cost.tetrahedra.size(), 4u);
+  for (int s = 0; s < 4; ++s)
+  {
+    EXPECT_NEAR(volume[s], 0.5, 1e-12) << s;
+    EXPECT_NEAR(cost.regularTetrahedra[s] / (0.5 * 6 * std::sqrt(2.0) / 1e-3), 1.0, 1e-9) << s;
+    EXPECT_NEAR(cost.boundaryTriangles[s] / (4.0 * 4 / std::sqrt(3.0) / 1e-2), 1.0, 1e-9) << s;
+    EXPECT_NEAR(cost.tetrahedra[s], 0.74 * cost.regularTetrahedra[s] + 6.25 * cost.boundaryTriangles[s], 1e-6);
+  }
+  // recursive bisection cuts the same box into other parts: the volumes still add up
+  const SurfaceComplex b = boxInFour(CutStrategy::RecursiveBisection);
+  const PredictedCost bisected = predictCost(b, [](const Vec3&) { return 0.1; });
+  const double sum = std::accumulate(bisected.regularTetrahedra.begin(), bisected.regularTetrahedra.end(), 0.0);
+  EXPECT_NEAR(sum / (2.0 * 6 * std::sqrt(2.0) / 1e-3), 1.0, 1e-9);
+}
+
+// h = 0.05 + 0.1 x over the box [0, 2] x [0, 1]^2: the whole is
+// 6 sqrt(2) * 5 * (1 / 0.05^2 - 1 / 0.25^2) = 6 sqrt(2) * 1920, and the
+// subdomains at small x, where h is small, get far more.
+TEST(PredictedCost, GradedSizeAddsUpAndWeighsTheFineEnd)
+{
+  const SurfaceComplex c = boxInFour(CutStrategy::ParallelPlanes);
+  const std::vector<double> count =
+    predictCost(c, [](const Vec3& p) { return 0.05 + 0.1 * p[0]; }).regularTetrahedra;
+  const double total = std::accumulate(count.begin(), count.end(), 0.0);
+  EXPECT_NEAR(total / (6 * std::sqrt(2.0) * 1920), 1.0, 1e-4); // 3.1e-5 measured: Gauss-Legendre on (0.05 + 0.1 x)^-3
+  const std::vector<double> volume = subdomainVolumes(c);
+  double densest = 0, sparsest = std::numeric_limits<double>::infinity();
+  for (int s = 0; s < 4; ++s)
+  {
+    densest = std::max(densest, count[s] / volume[s]);
+    sparsest = std::min(sparsest, count[s] / volume[s]);
+  }
+  EXPECT_GT(densest, 10 * sparsest); // h^-3 spans 125 x over the box
+}
+
+// A field that is not positive somewhere counts as the floor; the jump
+// to it defeats the quadrature, so a count can come out wrong, but never
+// negative or infinite (the filters refuse such a field at the surface).
+TEST(PredictedCost, NonPositiveSizesAreFloored)
+{
+  const SurfaceComplex c = boxInFour(CutStrategy::ParallelPlanes);
+  const std::vector<double> count = predictCost(c, [](const Vec3& p) { return p[0] - 1.0; }).tetrahedra;
+  for (double n : count)
+  {
+    EXPECT_TRUE(std::isfinite(n) && n >= 0) << n;
+  }
+}
