@@ -14,6 +14,9 @@ Checks, on every edge of the tetrahedra (each once, by GlobalPointIds):
   within [0.8, 1.2] (measured: 91.6 % and 0.94);
 * the field is followed, not just a finer uniform size: the median edge in
   z < -0.5 is at most half the median edge in 0 < z < 0.5;
+* the ranks share the work by the cost the field predicts: max/mean
+  tetrahedra per rank at most 1.10 (1.055 measured; 1.298 when the
+  subdomains went to the ranks by volume);
 * the tetrahedron count is between 1 and 2.5 times what the field predicts
   for regular tetrahedra, integral of 6 sqrt(2) / h^3 over the ball (TetGen's
   tetrahedra are smaller than regular ones: 1.9 x for a uniform size).
@@ -80,6 +83,9 @@ def main(argv):
     assert polar <= 0.5 * middle_band, "the edges do not grow with the field"
     assert 1.0 <= len(tets) / predicted <= 2.5, "tetrahedra %d, predicted %.0f" % (len(tets), predicted)
     assert summary["tetrahedra"] == len(tets), (summary["tetrahedra"], len(tets))
+    balance = summary["balance_max_over_mean"]
+    print("balance max/mean tetrahedra per rank %.3f" % balance)
+    assert balance <= 1.10, "the ranks do not share the graded mesh evenly: %.3f" % balance
     print("ok")
 
 
