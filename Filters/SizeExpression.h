@@ -12,15 +12,24 @@
 
 namespace ptm
 {
-// An empty expression gives an empty function (no field). Otherwise the
-// expression is parsed once; on a syntax error or a non-scalar result the
-// function is empty and `error` says why (the same on every rank, since
-// every rank has the same property value).
-SizeFunction sizeFunctionOf(const std::string& expression, std::string& error);
+// The expression and the function made of it (empty when the expression is).
+struct SizeField
+{
+  std::string expression;
+  SizeFunction size;
+
+  explicit operator bool() const { return static_cast<bool>(this->size); }
+};
+
+// An empty expression gives an empty field. Otherwise the expression is
+// parsed once; on a syntax error or a non-scalar result the field is empty
+// and `error` says why (the same on every rank, since every rank has the
+// same property value).
+SizeField sizeFieldOf(const std::string& expression, std::string& error);
 
 // The field at `points`; false with `error` naming the first point where it
 // is not a positive finite size.
-bool sizesAt(const SizeFunction& size, const std::string& expression, const std::vector<Vec3>& points,
-  std::vector<double>& sizes, std::string& error);
+bool sizesAt(const SizeField& field, const std::vector<Vec3>& points, std::vector<double>& sizes,
+  std::string& error);
 } // namespace ptm
 #endif

@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <functional>
 #include <map>
 #include <sstream>
 #include <tuple>
@@ -41,6 +42,111 @@ struct RegionFigures
   long long encroached = 0;
   double minimumAngle = 180;
 };
+
+struct Done
+{
+  RegionKey key;
+  std::vector<ptm::Index> pointOfLocal; // region point -> piece point
+  ptm::InterfaceTriangulation triangulation;
+  int planeId;
+  ptm::SubdomainPair pair;
+};
+
+// Every region of the piece triangulated from canonically ordered input
+// (its points by global id, its edges sorted), so both ranks that hold a
+// region get the same triangles. On a failure `error` names the region.
+std::vector<Done> triangulateRegions(const ptm::ComplexPiece& piece,
+  const ptm::InterfaceTriangulationOptions& options, std::string& error,
+  const std::function<void(double)>& progress)
+{
+  const ptm::SurfaceComplex& c = piece.complex;
+  std::vector<Done> done;
+  for (const ptm::InterfaceRegion& region : c.interfaces)
+  {
+    Done d;
+    d.planeId = region.planeId;
+    d.pair = region.pair;
+    d.key = RegionKey(region.planeId, region.pair[0], region.pair[1]);
+    std::vector<ptm::Index> points;
+    for (const auto& e : region.edges)
+    {
+      points.push_back(e[0]);
+      points.push_back(e[1]);
+    }
+    std::sort(points.begin(), points.end(),
+      [&](ptm::Index a, ptm::Index b) { return piece.globalIds[a] < piece.globalIds[b]; });
+    points.erase(std::unique(points.begin(), points.end()), points.end());
+    ptm::PlanarRegion planar = ptm::planarRegionOf(c, region, points);
+    std::sort(planar.edges.begin(), planar.edges.end());
+    try
+    {
+      ptm::InterfaceTriangulationResult r = ptm::triangulateInterface(planar, options);
+      if (!r.ok)
+      {
+        std::ostringstream msg;
+        msg << "interface on plane " << region.planeId << " between subdomains " << region.pair[0]
+            << " and " << region.pair[1] << ": " << r.error;
+        error = msg.str();
+        break;
+      }
+      d.triangulation = std::move(r.triangulation);
+    }
+    catch (const std::exception& e)
+    {
+      error = std::string("interface triangulation failed: ") + e.what();
+      break;
+    }
+    d.pointOfLocal = points;
+    done.push_back(std::move(d));
+    progress(static_cast<double>(done.size()) / c.interfaces.size());
+  }
+  return done;
+}
+
+// The first global id of every region's new points, numbered from `next`
+// (advanced past them) in region-key order; every rank learns every
+// region's count and figures (a region on two ranks is counted once), and
+// `total` sums the figures.
+std::map<RegionKey, long long> firstNewIds(
+  vtkMultiProcessController* controller, const std::vector<Done>& done, long long& next, RegionFigures& total)
+{
+  std::vector<long long> mine;
+  for (const Done& d : done)
+  {
+    mine.push_back(std::get<0>(d.key));
+    mine.push_back(std::get<1>(d.key));
+    mine.push_back(std::get<2>(d.key));
+    mine.push_back(static_cast<long long>(d.triangulation.newPoints.size()));
+    mine.push_back(static_cast<long long>(d.triangulation.trianglesBelowMinimumAngle));
+    mine.push_back(static_cast<long long>(d.triangulation.trianglesBelowMinimumAngleAwayFromBoundary));
+    mine.push_back(static_cast<long long>(d.triangulation.encroachedSegmentsLeft));
+    mine.push_back(std::llround(d.triangulation.minimumAngleDegrees * 1e9));
+  }
+  const std::vector<long long> all = ptm::allGatherValues(controller, mine);
+  std::map<RegionKey, RegionFigures> regions;
+  for (std::size_t k = 0; k + 7 < all.size(); k += 8)
+  {
+    RegionFigures f;
+    f.newPoints = all[k + 3];
+    f.belowMinimumAngle = all[k + 4];
+    f.belowMinimumAngleAwayFromBoundary = all[k + 5];
+    f.encroached = all[k + 6];
+    f.minimumAngle = static_cast<double>(all[k + 7]) * 1e-9;
+    regions[RegionKey(all[k], all[k + 1], all[k + 2])] = f;
+  }
+  std::map<RegionKey, long long> firstNewId;
+  for (const auto& [key, f] : regions)
+  {
+    firstNewId[key] = next;
+    next += f.newPoints;
+    total.newPoints += f.newPoints;
+    total.belowMinimumAngle += f.belowMinimumAngle;
+    total.belowMinimumAngleAwayFromBoundary += f.belowMinimumAngleAwayFromBoundary;
+    total.encroached += f.encroached;
+    total.minimumAngle = std::min(total.minimumAngle, f.minimumAngle);
+  }
+  return firstNewId;
+}
 } // namespace
 
 vtkInterfaceTriangulator::vtkInterfaceTriangulator()
@@ -100,7 +206,8 @@ int vtkInterfaceTriangulator::RequestData(
   ptm::InterfaceTriangulationOptions options;
   options.minimumAngleDegrees = this->MinimumAngle;
   options.maximumEdgeLength = this->MaximumEdgeLength;
-  options.sizeAt = ptm::sizeFunctionOf(this->SizeExpression, localError);
+  const ptm::SizeField field = ptm::sizeFieldOf(this->SizeExpression, localError);
+  options.sizeAt = field.size;
   if (!localError.empty())
   {
     // the same property on every rank, so every rank stops here
@@ -111,11 +218,11 @@ int vtkInterfaceTriangulator::RequestData(
   // A size field must be positive where the interfaces meet the surface
   // (inside, the mesher falls back to the automatic size); a field that
   // reaches 0 at the surface would refine without end.
-  if (options.sizeAt)
+  if (field)
   {
     std::vector<double> sizes;
     std::string error;
-    if (!ptm::sizesAt(options.sizeAt, this->SizeExpression, piece.complex.points, sizes, error))
+    if (!ptm::sizesAt(field, piece.complex.points, sizes, error))
     {
       localError = "InterfaceTriangulator: " + error;
     }
@@ -127,56 +234,8 @@ int vtkInterfaceTriangulator::RequestData(
     return 0;
   }
   ptm::SurfaceComplex& c = piece.complex;
-  struct Done
-  {
-    RegionKey key;
-    std::vector<ptm::Index> pointOfLocal; // region point -> piece point
-    ptm::InterfaceTriangulation triangulation;
-    int planeId;
-    ptm::SubdomainPair pair;
-  };
-  std::vector<Done> done;
-  std::size_t regionIndex = 0;
-  for (const ptm::InterfaceRegion& region : c.interfaces)
-  {
-    Done d;
-    d.planeId = region.planeId;
-    d.pair = region.pair;
-    d.key = RegionKey(region.planeId, region.pair[0], region.pair[1]);
-    std::vector<ptm::Index> points;
-    for (const auto& e : region.edges)
-    {
-      points.push_back(e[0]);
-      points.push_back(e[1]);
-    }
-    std::sort(points.begin(), points.end(), [&](ptm::Index a, ptm::Index b) {
-      return piece.globalIds[a] < piece.globalIds[b];
-    });
-    points.erase(std::unique(points.begin(), points.end()), points.end());
-    ptm::PlanarRegion planar = ptm::planarRegionOf(c, region, points);
-    std::sort(planar.edges.begin(), planar.edges.end());
-    try
-    {
-      ptm::InterfaceTriangulationResult r = ptm::triangulateInterface(planar, options);
-      if (!r.ok)
-      {
-        std::ostringstream msg;
-        msg << "interface on plane " << region.planeId << " between subdomains " << region.pair[0]
-            << " and " << region.pair[1] << ": " << r.error;
-        localError = msg.str();
-        break;
-      }
-      d.triangulation = std::move(r.triangulation);
-    }
-    catch (const std::exception& e)
-    {
-      localError = std::string("interface triangulation failed: ") + e.what();
-      break;
-    }
-    d.pointOfLocal = points;
-    done.push_back(std::move(d));
-    this->UpdateProgress(0.1 + 0.7 * static_cast<double>(++regionIndex) / c.interfaces.size());
-  }
+  const std::vector<Done> done = triangulateRegions(piece, options, localError,
+    [this](double fraction) { this->UpdateProgress(0.1 + 0.7 * fraction); });
   if (!ptm::agreeAllSucceeded(controller, localError.empty(), localError, message))
   {
     vtkErrorMacro("InterfaceTriangulator failed: " << message);
@@ -190,43 +249,9 @@ int vtkInterfaceTriangulator::RequestData(
   }
 
   // Global ids of the new points: every rank learns every region's count.
-  std::vector<long long> mine;
-  for (const Done& d : done)
-  {
-    mine.push_back(std::get<0>(d.key));
-    mine.push_back(std::get<1>(d.key));
-    mine.push_back(std::get<2>(d.key));
-    mine.push_back(static_cast<long long>(d.triangulation.newPoints.size()));
-    mine.push_back(static_cast<long long>(d.triangulation.trianglesBelowMinimumAngle));
-    mine.push_back(static_cast<long long>(d.triangulation.trianglesBelowMinimumAngleAwayFromBoundary));
-    mine.push_back(static_cast<long long>(d.triangulation.encroachedSegmentsLeft));
-    mine.push_back(std::llround(d.triangulation.minimumAngleDegrees * 1e9));
-  }
-  const std::vector<long long> all = ptm::allGatherValues(controller, mine);
-  std::map<RegionKey, RegionFigures> regions;
-  for (std::size_t k = 0; k + 7 < all.size(); k += 8)
-  {
-    RegionFigures f;
-    f.newPoints = all[k + 3];
-    f.belowMinimumAngle = all[k + 4];
-    f.belowMinimumAngleAwayFromBoundary = all[k + 5];
-    f.encroached = all[k + 6];
-    f.minimumAngle = static_cast<double>(all[k + 7]) * 1e-9;
-    regions[RegionKey(all[k], all[k + 1], all[k + 2])] = f;
-  }
-  std::map<RegionKey, long long> firstNewId;
-  long long next = piece.globalPointCount;
   RegionFigures total;
-  for (const auto& [key, f] : regions)
-  {
-    firstNewId[key] = next;
-    next += f.newPoints;
-    total.newPoints += f.newPoints;
-    total.belowMinimumAngle += f.belowMinimumAngle;
-    total.belowMinimumAngleAwayFromBoundary += f.belowMinimumAngleAwayFromBoundary;
-    total.encroached += f.encroached;
-    total.minimumAngle = std::min(total.minimumAngle, f.minimumAngle);
-  }
+  long long next = piece.globalPointCount;
+  const std::map<RegionKey, long long> firstNewId = firstNewIds(controller, done, next, total);
 
   // The complex with interface triangles instead of loops.
   if (c.trianglePlanes.size() != c.triangles.size())
@@ -272,7 +297,7 @@ int vtkInterfaceTriangulator::RequestData(
   addCount("EncroachedBoundarySegments", total.encroached);
   vtkNew<vtkDoubleArray> angle;
   angle->SetName("InterfaceMinimumAngle");
-  angle->InsertNextValue(regions.empty() ? 0.0 : total.minimumAngle);
+  angle->InsertNextValue(firstNewId.empty() ? 0.0 : total.minimumAngle);
   fd->AddArray(angle);
   // carry the cutter's own facts through
   if (input)

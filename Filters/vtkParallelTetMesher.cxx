@@ -107,13 +107,6 @@ double regularTetrahedronEdge(double v)
 {
   return std::cbrt(6.0 * std::sqrt(2.0) * v);
 }
-// The SizeExpression property as the core's size function.
-struct SizeField
-{
-  std::string expression;
-  ptm::SizeFunction size; // empty: no field
-};
-
 // One subdomain refined (when asked) and meshed.
 struct MeshedSubdomain
 {
@@ -138,12 +131,12 @@ constexpr double kTetGenSizeScale = 0.75;
 // TetGen on `surface`, with the size field's values at its points when
 // there is one.
 ptm::TetMeshingResult meshWithSizes(const ptm::SubdomainSurface& surface, ptm::TetMeshingOptions options,
-  const SizeField& field)
+  const ptm::SizeField& field)
 {
-  if (field.size)
+  if (field)
   {
     std::string error;
-    if (!ptm::sizesAt(field.size, field.expression, surface.surface.points, options.pointSizes, error))
+    if (!ptm::sizesAt(field, surface.surface.points, options.pointSizes, error))
     {
       ptm::TetMeshingResult r;
       r.error = error;
@@ -158,7 +151,7 @@ ptm::TetMeshingResult meshWithSizes(const ptm::SubdomainSurface& surface, ptm::T
 }
 
 MeshedSubdomain meshSubdomain(ptm::SubdomainSurface& surface, const ptm::TetMeshingOptions& options,
-  const ptm::SurfaceRefinementOptions* refinement, const SizeField& field)
+  const ptm::SurfaceRefinementOptions* refinement, const ptm::SizeField& field)
 {
   MeshedSubdomain m;
   const ptm::SubdomainSurface unrefined = refinement ? surface : ptm::SubdomainSurface{};
@@ -588,9 +581,7 @@ int vtkParallelTetMesher::RequestData(
     : std::pow(piece.inputMeanEdgeLength, 3) / (6.0 * std::sqrt(2.0));
   options.minimumDihedralAngle = this->MinimumDihedralAngle;
   options.extraSwitches = this->ExtraSwitches;
-  SizeField field;
-  field.expression = this->SizeExpression;
-  field.size = ptm::sizeFunctionOf(field.expression, localError);
+  const ptm::SizeField field = ptm::sizeFieldOf(this->SizeExpression, localError);
   if (!localError.empty())
   {
     return fail(localError); // the same property on every rank, so every rank stops here

@@ -22,11 +22,79 @@
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
 
 #include <cmath>
 #include <exception>
 #include <sstream>
+
+namespace
+{
+// With a size field, the tetrahedra it predicts in every subdomain
+// (PredictedCost.h), the field no larger than the mesher's largest size
+// (`maximumSize`, or the input's mean edge as the mesher's automatic
+// MaximumVolume); the field must be positive at every point of the complex.
+// Every rank has the whole complex, so every rank gets the same costs, or
+// the same error.
+bool predictedCosts(const ptm::DecompositionResult& result, const ptm::SizeField& field,
+  double maximumSize, std::vector<double>& predicted, std::string& error)
+{
+  predicted.clear();
+  if (!field)
+  {
+    return true;
+  }
+  std::vector<double> sizes;
+  if (!ptm::sizesAt(field, result.complex.points, sizes, error))
+  {
+    return false;
+  }
+  const double cap = maximumSize > 0 ? maximumSize : result.inputMeanEdgeLength;
+  const ptm::SizeFunction capped = [&field, cap](const ptm::Vec3& p) {
+    const double h = field.size(p);
+    return cap > 0 && h > cap ? cap : h;
+  };
+  predicted = ptm::predictCost(result.complex, capped).tetrahedra;
+  return true;
+}
+
+vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values)
+{
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName(name);
+  for (double v : values)
+  {
+    a->InsertNextValue(v);
+  }
+  return a;
+}
+
+// The cutter's facts every later filter passes on: the balance criterion and
+// how far it was met, the cuts the alignment turned, what the input check
+// repaired (as warned).
+void addCutterFacts(vtkFieldData* fd, const ptm::DecompositionResult& result, const std::string& criterionName)
+{
+  vtkNew<vtkStringArray> criterion;
+  criterion->SetName(ptm::arrays::BalanceCriterionName);
+  criterion->InsertNextValue(criterionName);
+  fd->AddArray(criterion);
+  fd->AddArray(doubleArray(ptm::arrays::MaximumImbalance, { result.maximumImbalance }));
+  vtkNew<vtkIntArray> aligned; // cuts turned parallel to an earlier line, and through it
+  aligned->SetName(ptm::arrays::AlignedCuts);
+  aligned->SetNumberOfComponents(2);
+  const int alignedCounts[2] = { result.alignedNormals, result.alignedLines };
+  aligned->InsertNextTypedTuple(alignedCounts);
+  fd->AddArray(aligned);
+  vtkNew<vtkStringArray> repairs;
+  repairs->SetName(ptm::arrays::InputRepairs);
+  for (const std::string& warning : result.warnings)
+  {
+    repairs->InsertNextValue(warning);
+  }
+  fd->AddArray(repairs);
+}
+} // namespace
 
 vtkStandardNewMacro(vtkVolumeBalancedCutter);
 vtkCxxSetObjectMacro(vtkVolumeBalancedCutter, Controller, vtkMultiProcessController);
@@ -80,7 +148,7 @@ int vtkVolumeBalancedCutter::RequestData(
   checks.Require(this->SelfIntersectionCheckLimit >= 0, "SelfIntersectionCheckLimit",
     "be a number of triangles, 0 or more", this->SelfIntersectionCheckLimit);
   std::string sizeError;
-  const ptm::SizeFunction size = ptm::sizeFunctionOf(this->SizeExpression, sizeError);
+  const ptm::SizeField size = ptm::sizeFieldOf(this->SizeExpression, sizeError);
   if (!checks.Ok() || !sizeError.empty())
   {
     vtkErrorMacro(<< (checks.Ok() ? "VolumeBalancedCutter: " + sizeError : checks.Message()));
@@ -155,27 +223,13 @@ int vtkVolumeBalancedCutter::RequestData(
   ptm::ComplexPiece piece;
   piece.subdomainVolume = result.subdomainVolume;
   piece.subdomainMeasure = result.subdomainMeasure;
-  // every rank has the whole complex, so every rank predicts the same costs
-  // (and refuses the same field: it must be positive on the whole surface)
-  if (size)
+  std::vector<double> predicted;
+  if (!predictedCosts(result, size, this->MaximumSize, predicted, localError))
   {
-    std::vector<double> sizes;
-    if (!ptm::sizesAt(size, this->SizeExpression, result.complex.points, sizes, localError))
-    {
-      vtkErrorMacro("VolumeBalancedCutter failed: " << localError);
-      output->Initialize();
-      return 0;
-    }
+    vtkErrorMacro("VolumeBalancedCutter failed: " << localError);
+    output->Initialize();
+    return 0;
   }
-  // the mesher never goes above its MaximumVolume's edge (automatic: the
-  // input's mean edge), so neither does the prediction
-  const double cap = this->MaximumSize > 0 ? this->MaximumSize : result.inputMeanEdgeLength;
-  const ptm::SizeFunction capped = [&size, cap](const ptm::Vec3& p) {
-    const double h = size(p);
-    return cap > 0 && h > cap ? cap : h;
-  };
-  const std::vector<double> predicted =
-    size ? ptm::predictCost(result.complex, capped).tetrahedra : std::vector<double>();
   piece.subdomainRank =
     ptm::assignSubdomainsToRanks(size ? predicted : result.subdomainMeasure, ranks);
   piece.globalPointCount = static_cast<ptm::Index>(result.complex.points.size());
@@ -196,37 +250,11 @@ int vtkVolumeBalancedCutter::RequestData(
   ptm::complexToPolyData(piece, mine, output);
 
   vtkFieldData* fd = output->GetFieldData();
+  addCutterFacts(fd, result, ptm::toString(options.criterion));
   if (size)
   {
-    vtkNew<vtkDoubleArray> predictedArray;
-    predictedArray->SetName(ptm::arrays::SubdomainPredictedTetrahedra);
-    for (double n : predicted)
-    {
-      predictedArray->InsertNextValue(n);
-    }
-    fd->AddArray(predictedArray);
+    fd->AddArray(doubleArray(ptm::arrays::SubdomainPredictedTetrahedra, predicted));
   }
-  vtkNew<vtkStringArray> criterion;
-  criterion->SetName(ptm::arrays::BalanceCriterionName);
-  criterion->InsertNextValue(ptm::toString(options.criterion));
-  fd->AddArray(criterion);
-  vtkNew<vtkDoubleArray> imbalance;
-  imbalance->SetName(ptm::arrays::MaximumImbalance);
-  imbalance->InsertNextValue(result.maximumImbalance);
-  fd->AddArray(imbalance);
-  vtkNew<vtkIntArray> aligned; // cuts turned parallel to an earlier line, and through it
-  aligned->SetName(ptm::arrays::AlignedCuts);
-  aligned->SetNumberOfComponents(2);
-  const int alignedCounts[2] = { result.alignedNormals, result.alignedLines };
-  aligned->InsertNextTypedTuple(alignedCounts);
-  fd->AddArray(aligned);
-  vtkNew<vtkStringArray> repairs; // what the input check repaired, as warned
-  repairs->SetName(ptm::arrays::InputRepairs);
-  for (const std::string& warning : result.warnings)
-  {
-    repairs->InsertNextValue(warning);
-  }
-  fd->AddArray(repairs);
   if (cadFaces)
   {
     fd->AddArray(cadFaces);
