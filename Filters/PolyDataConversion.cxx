@@ -23,6 +23,27 @@
 
 namespace ptm
 {
+void triangleSurfaceToPolyData(const TriangleSurface& s, vtkPolyData* output)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(s.points.size()));
+  for (std::size_t i = 0; i < s.points.size(); ++i)
+  {
+    points->SetPoint(static_cast<vtkIdType>(i), s.points[i].data());
+  }
+  vtkNew<vtkCellArray> polys;
+  polys->AllocateExact(static_cast<vtkIdType>(s.triangles.size()), 3 * s.triangles.size());
+  for (const Triangle& t : s.triangles)
+  {
+    const vtkIdType ids[3] = { static_cast<vtkIdType>(t[0]), static_cast<vtkIdType>(t[1]),
+      static_cast<vtkIdType>(t[2]) };
+    polys->InsertNextCell(3, ids);
+  }
+  output->SetPoints(points);
+  output->SetPolys(polys);
+}
+
 TriangleSurface triangleSurfaceFromPolyData(vtkPolyData* input)
 {
   TriangleSurface s;

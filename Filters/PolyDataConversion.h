@@ -14,6 +14,10 @@ namespace ptm
 // lines and vertices ignored).
 TriangleSurface triangleSurfaceFromPolyData(vtkPolyData* input);
 
+// The other way: `output` gets the surface's points (double) and triangles,
+// nothing else (readers and filters add their own arrays).
+void triangleSurfaceToPolyData(const TriangleSurface& surface, vtkPolyData* output);
+
 // What a rank holds of the labeled complex, with the complex-wide facts
 // carried in field data.
 struct ComplexPiece

@@ -39,27 +39,6 @@ vtkCxxSetObjectMacro(vtkAlphaWrapFilter, Controller, vtkMultiProcessController);
 
 namespace
 {
-void surfaceToPolyData(const ptm::TriangleSurface& s, vtkPolyData* output)
-{
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(s.points.size()));
-  for (std::size_t i = 0; i < s.points.size(); ++i)
-  {
-    points->SetPoint(static_cast<vtkIdType>(i), s.points[i].data());
-  }
-  vtkNew<vtkCellArray> polys;
-  polys->AllocateExact(static_cast<vtkIdType>(s.triangles.size()), 3 * s.triangles.size());
-  for (const ptm::Triangle& t : s.triangles)
-  {
-    const vtkIdType ids[3] = { static_cast<vtkIdType>(t[0]), static_cast<vtkIdType>(t[1]),
-      static_cast<vtkIdType>(t[2]) };
-    polys->InsertNextCell(3, ids);
-  }
-  output->SetPoints(points);
-  output->SetPolys(polys);
-}
-
 void addValue(vtkFieldData* fd, const char* name, double value)
 {
   vtkNew<vtkDoubleArray> a;
@@ -139,7 +118,7 @@ int vtkAlphaWrapFilter::RequestData(
   const int piece = ptm::requestedPiece(outInfo);
   if (piece == 0)
   {
-    surfaceToPolyData(cache.wrapped, output);
+    ptm::triangleSurfaceToPolyData(cache.wrapped, output);
   }
   const std::vector<double>& figures = cache.figures;
   vtkFieldData* fd = output->GetFieldData();

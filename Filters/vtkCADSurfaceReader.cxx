@@ -2,6 +2,7 @@
 
 #include "CADTessellation.h"
 #include "PipelineRequests.h"
+#include "PolyDataConversion.h"
 #include "SurfaceComplexArrays.h"
 
 #include "vtkCellArray.h"
@@ -81,28 +82,14 @@ int vtkCADSurfaceReader::RequestData(
     vtkWarningMacro(<< w);
   }
 
-  const ptm::TriangleSurface& s = r.surface;
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(s.points.size()));
-  for (std::size_t i = 0; i < s.points.size(); ++i)
-  {
-    points->SetPoint(static_cast<vtkIdType>(i), s.points[i].data());
-  }
-  vtkNew<vtkCellArray> polys;
-  polys->AllocateExact(static_cast<vtkIdType>(s.triangles.size()), 3 * s.triangles.size());
+  ptm::triangleSurfaceToPolyData(r.surface, output);
   vtkNew<vtkIdTypeArray> faces;
   faces->SetName(ptm::arrays::CADFaceId);
-  faces->SetNumberOfTuples(static_cast<vtkIdType>(s.triangles.size()));
-  for (std::size_t t = 0; t < s.triangles.size(); ++t)
+  faces->SetNumberOfTuples(static_cast<vtkIdType>(r.faceId.size()));
+  for (std::size_t t = 0; t < r.faceId.size(); ++t)
   {
-    const vtkIdType ids[3] = { static_cast<vtkIdType>(s.triangles[t][0]),
-      static_cast<vtkIdType>(s.triangles[t][1]), static_cast<vtkIdType>(s.triangles[t][2]) };
-    polys->InsertNextCell(3, ids);
     faces->SetValue(static_cast<vtkIdType>(t), static_cast<vtkIdType>(r.faceId[t]));
   }
-  output->SetPoints(points);
-  output->SetPolys(polys);
   output->GetCellData()->AddArray(faces);
   output->GetCellData()->SetActiveScalars(ptm::arrays::CADFaceId);
   return 1;

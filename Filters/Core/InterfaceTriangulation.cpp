@@ -99,6 +99,15 @@ std::pair<double, double> starShortfallAt(
   return { deficit, -worst };
 }
 
+// At most kMovesPerStep moves per step length: the step scales with the
+// nearest neighbour, and where that is a hair away in a wide star the
+// search crept across it in ever tinier gains (a fuzzed 7-point surface
+// spent 11.6 s here, Release, in 14 triangles; capped, 36 ms). Real
+// input never comes near the cap: at 32 it changed the interfaces of
+// CGAL's oblong at K = 16 parallel planes, and TetGen then crashed on
+// one subdomain; at 2048 every corpus mesh is as without a cap.
+constexpr int kMovesPerStep = 2048;
+
 void smoothBadTriangles(CDT& cdt, std::size_t boundaryCount, double bound, double sizeFactor)
 {
   const int sweeps = 20;
@@ -151,14 +160,6 @@ void smoothBadTriangles(CDT& cdt, std::size_t boundaryCount, double bound, doubl
         best = atCentroid;
         bestPoint = centroid;
       }
-      // At most kMovesPerStep moves per step length: the step scales with the
-      // nearest neighbour, and where that is a hair away in a wide star the
-      // search crept across it in ever tinier gains (a fuzzed 7-point surface
-      // spent 11.6 s here, Release, in 14 triangles; capped, 36 ms). Real
-      // input never comes near the cap: at 32 it changed the interfaces of
-      // CGAL's oblong at K = 16 parallel planes, and TetGen then crashed on
-      // one subdomain; at 2048 every corpus mesh is as without a cap.
-      constexpr int kMovesPerStep = 2048;
       for (double step = 0.25 * shortest; step > 0.01 * shortest; step *= 0.5)
       {
         bool improved = true;
