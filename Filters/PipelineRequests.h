@@ -27,10 +27,15 @@ inline void announceAnyPiece(vtkInformationVector* outputVector)
   }
 }
 
-// Input port 0 asks for the whole data set: piece 0 of 1, no ghost levels.
-inline void requestWholeInput(vtkInformationVector** inputVector)
+// Input `port` asks for the whole data set: piece 0 of 1, no ghost levels
+// (nothing when nothing is connected to it).
+inline void requestWholeInput(vtkInformationVector** inputVector, int port = 0)
 {
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  vtkInformation* inInfo = inputVector[port]->GetInformationObject(0);
+  if (!inInfo)
+  {
+    return;
+  }
   inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
   inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
   inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);

@@ -396,4 +396,18 @@ bool complexFromPolyData(vtkPolyData* input, ComplexPiece& piece, std::string& e
   }
   return true;
 }
+void passOnFieldData(vtkPolyData* input, vtkFieldData* output)
+{
+  if (!input)
+  {
+    return;
+  }
+  for (const char* name : arrays::PassedOn)
+  {
+    if (vtkAbstractArray* a = input->GetFieldData()->GetAbstractArray(name))
+    {
+      output->AddArray(a);
+    }
+  }
+}
 } // namespace ptm

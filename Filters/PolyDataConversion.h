@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+class vtkFieldData;
 class vtkPolyData;
 
 namespace ptm
@@ -37,6 +38,10 @@ struct ComplexPiece
 // pair contains a subdomain in `keep` are written (all faces if keep is empty);
 // `globalIds` gives each complex point's global id (identity if empty).
 void complexToPolyData(const ComplexPiece& piece, const std::vector<int>& keep, vtkPolyData* output);
+
+// Copies the arrays of arrays::PassedOn that `input` has from its field data
+// to `output` (the facts of earlier stages a filter carries on).
+void passOnFieldData(vtkPolyData* input, vtkFieldData* output);
 
 // Reads a piece written by complexToPolyData (or by a later stage). Fails with
 // a message naming the missing or inconsistent array.

@@ -5,6 +5,7 @@
 #include "vtkMultiProcessController.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 
 namespace ptm
@@ -48,6 +49,37 @@ std::vector<T> gather(vtkMultiProcessController* c, const std::vector<T>& local,
     countsOut->assign(counts.begin(), counts.end());
   }
   return all;
+}
+
+// FNV-1a over bytes, continuing from `hash`
+constexpr std::uint64_t kFnvOffset = 1469598103934665603ull;
+std::uint64_t fnv1a(std::uint64_t hash, const void* data, std::size_t bytes)
+{
+  const unsigned char* b = static_cast<const unsigned char*>(data);
+  for (std::size_t i = 0; i < bytes; ++i)
+  {
+    hash = (hash ^ b[i]) * 1099511628211ull;
+  }
+  return hash;
+}
+
+// Collective: true on every rank when every rank passed the same `facts`
+// (sizes and a hash of what it holds); true at once in serial.
+bool sameOnEveryRank(vtkMultiProcessController* c, const std::vector<long long>& facts)
+{
+  if (!parallel(c))
+  {
+    return true;
+  }
+  const std::vector<long long> all = gather(c, facts, nullptr);
+  for (std::size_t k = facts.size(); k < all.size(); ++k)
+  {
+    if (all[k] != all[k % facts.size()])
+    {
+      return false;
+    }
+  }
+  return true;
 }
 // Element-wise reduction of a vector that has the same length on every rank.
 template <typename T>
@@ -147,30 +179,20 @@ bool agreeAnyAborted(vtkMultiProcessController* c, vtkAlgorithm* algorithm)
 
 TriangleSurface wholeSurfaceOnEveryRank(vtkMultiProcessController* c, const TriangleSurface& local)
 {
-  if (!parallel(c))
-  {
-    return local;
-  }
-  // FNV-1a over the bytes of the points and triangles
-  std::uint64_t hash = 1469598103934665603ull;
-  auto mix = [&hash](const void* data, std::size_t bytes) {
-    const unsigned char* b = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < bytes; ++i)
-    {
-      hash = (hash ^ b[i]) * 1099511628211ull;
-    }
-  };
-  mix(local.points.data(), local.points.size() * sizeof(Vec3));
-  mix(local.triangles.data(), local.triangles.size() * sizeof(Triangle));
-  const std::vector<long long> mine{ static_cast<long long>(local.points.size()),
-    static_cast<long long>(local.triangles.size()), static_cast<long long>(hash) };
-  const std::vector<long long> all = gather(c, mine, nullptr);
-  bool identical = true;
-  for (std::size_t k = 3; k < all.size(); ++k)
-  {
-    identical = identical && all[k] == all[k % 3];
-  }
-  return identical ? local : allGatherSurface(c, local);
+  std::uint64_t hash = fnv1a(kFnvOffset, local.points.data(), local.points.size() * sizeof(Vec3));
+  hash = fnv1a(hash, local.triangles.data(), local.triangles.size() * sizeof(Triangle));
+  return sameOnEveryRank(c, { static_cast<long long>(local.points.size()),
+                              static_cast<long long>(local.triangles.size()), static_cast<long long>(hash) })
+    ? local
+    : allGatherSurface(c, local);
+}
+
+std::vector<double> wholeValuesOnEveryRank(vtkMultiProcessController* c, const std::vector<double>& local)
+{
+  const std::uint64_t hash = fnv1a(kFnvOffset, local.data(), local.size() * sizeof(double));
+  return sameOnEveryRank(c, { static_cast<long long>(local.size()), static_cast<long long>(hash) })
+    ? local
+    : gather(c, local, nullptr);
 }
 
 TriangleSurface allGatherSurface(vtkMultiProcessController* c, const TriangleSurface& local)

@@ -43,6 +43,10 @@ TriangleSurface allGatherSurface(vtkMultiProcessController* controller, const Tr
 // ignores the request and stays distributed).
 TriangleSurface wholeSurfaceOnEveryRank(vtkMultiProcessController* controller, const TriangleSurface& local);
 
+// The same for values (say, samples of a size field): the local ones if
+// every rank holds the same, else every rank's concatenated in rank order.
+std::vector<double> wholeValuesOnEveryRank(vtkMultiProcessController* controller, const std::vector<double>& local);
+
 // Element-wise maximum / sum over ranks of a vector of the same length on every rank.
 void allReduceMax(vtkMultiProcessController* controller, std::vector<long long>& values);
 void allReduceMin(vtkMultiProcessController* controller, std::vector<long long>& values);

@@ -25,6 +25,9 @@ constexpr const char* MaximumImbalance = "MaximumImbalance";       // double
 constexpr const char* InputRepairs = "InputRepairs";               // strings: repairs of the input check
 constexpr const char* AlignedCuts = "AlignedCuts";                 // 2 ints: cuts turned parallel to an earlier line, and through it
 constexpr const char* InputMeanEdgeLength = "InputMeanEdgeLength"; // double: the input surface's resolution
+// the cutter's SizeArray (SizeField.h): double x4 per sample (x, y, z, size), and the array's name
+constexpr const char* SizeFieldSamples = "SizeFieldSamples";
+constexpr const char* SizeFieldArray = "SizeFieldArray"; // string
 
 // CAD input (vtkCADSurfaceReader): the CAD face every triangle came from
 constexpr const char* CADFaceId = "CADFaceId"; // cell data, vtkIdType: index in the TopExp face map
@@ -32,6 +35,13 @@ constexpr const char* CADFaceId = "CADFaceId"; // cell data, vtkIdType: index in
 // its CADFaceId, carried by every stage so the mesher can put CADFaceId on
 // its boundary port
 constexpr const char* SourceFaceCADFaceId = "SourceFaceCADFaceId";
+
+// The facts of earlier stages that every later stage copies from its input's
+// field data to its output's (PolyDataConversion.h: passOnFieldData).
+constexpr const char* PassedOn[] = { BalanceCriterionName, MaximumImbalance, SourceFaceCADFaceId,
+  SizeFieldSamples, SizeFieldArray, "InterfaceNewPoints", "InterfaceTrianglesBelowMinimumAngle",
+  "InterfaceTrianglesBelowMinimumAngleAwayFromBoundary", "EncroachedBoundarySegments",
+  "InterfaceMinimumAngle" };
 
 // field data of vtkAlphaWrapFilter's output (absolute lengths)
 constexpr const char* WrapAlpha = "WrapAlpha";

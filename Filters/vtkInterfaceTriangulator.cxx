@@ -5,7 +5,7 @@
 #include "PolyDataConversion.h"
 #include "PropertyChecks.h"
 #include "RankCollectives.h"
-#include "SizeExpression.h"
+#include "SizeField.h"
 #include "SurfaceComplexArrays.h"
 
 #include "vtkDoubleArray.h"
@@ -206,7 +206,8 @@ int vtkInterfaceTriangulator::RequestData(
   ptm::InterfaceTriangulationOptions options;
   options.minimumAngleDegrees = this->MinimumAngle;
   options.maximumEdgeLength = this->MaximumEdgeLength;
-  const ptm::SizeField field = ptm::sizeFieldOf(this->SizeExpression, localError);
+  const ptm::SizeField field = ptm::complexSizeField(
+    this->SizeExpression, input ? input->GetFieldData() : nullptr, localError);
   options.sizeAt = field.size;
   if (!localError.empty())
   {
@@ -299,18 +300,7 @@ int vtkInterfaceTriangulator::RequestData(
   angle->SetName("InterfaceMinimumAngle");
   angle->InsertNextValue(firstNewId.empty() ? 0.0 : total.minimumAngle);
   fd->AddArray(angle);
-  // carry the cutter's own facts through
-  if (input)
-  {
-    for (const char* name : { ptm::arrays::BalanceCriterionName, ptm::arrays::MaximumImbalance,
-           ptm::arrays::SourceFaceCADFaceId })
-    {
-      if (vtkAbstractArray* a = input->GetFieldData()->GetAbstractArray(name))
-      {
-        fd->AddArray(a);
-      }
-    }
-  }
+  ptm::passOnFieldData(input, fd); // the cutter's facts and the size samples
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -6,7 +6,7 @@
 #include "PolyDataConversion.h"
 #include "PropertyChecks.h"
 #include "RankCollectives.h"
-#include "SizeExpression.h"
+#include "SizeField.h"
 #include "SubdomainSurface.h"
 #include "SurfaceComplexArrays.h"
 #include "SurfaceRefinement.h"
@@ -581,7 +581,8 @@ int vtkParallelTetMesher::RequestData(
     : std::pow(piece.inputMeanEdgeLength, 3) / (6.0 * std::sqrt(2.0));
   options.minimumDihedralAngle = this->MinimumDihedralAngle;
   options.extraSwitches = this->ExtraSwitches;
-  const ptm::SizeField field = ptm::sizeFieldOf(this->SizeExpression, localError);
+  const ptm::SizeField field = ptm::complexSizeField(
+    this->SizeExpression, input ? input->GetFieldData() : nullptr, localError);
   if (!localError.empty())
   {
     return fail(localError); // the same property on every rank, so every rank stops here

@@ -191,20 +191,7 @@ int vtkSurfaceRelaxer::RequestData(
   ptm::complexToPolyData(whole, mine, output);
   vtkFieldData* fd = output->GetFieldData();
   addRelaxationFields(fd, result, this->Mode);
-  if (input)
-  {
-    for (const char* name : { "InterfaceNewPoints", "InterfaceTrianglesBelowMinimumAngle",
-           "InterfaceTrianglesBelowMinimumAngleAwayFromBoundary", "EncroachedBoundarySegments",
-           "InterfaceMinimumAngle",
-           ptm::arrays::BalanceCriterionName, ptm::arrays::MaximumImbalance,
-           ptm::arrays::SourceFaceCADFaceId })
-    {
-      if (vtkAbstractArray* a = input->GetFieldData()->GetAbstractArray(name))
-      {
-        fd->AddArray(a);
-      }
-    }
-  }
+  ptm::passOnFieldData(input, fd); // the earlier stages' facts and the size samples
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -6,11 +6,12 @@
 #include "PropertyChecks.h"
 #include "RankCollectives.h"
 #include "PredictedCost.h"
-#include "SizeExpression.h"
+#include "SizeField.h"
 #include "SubdomainAssignment.h"
 #include "SurfaceComplexArrays.h"
 #include "VolumeBalancedDecomposition.h"
 
+#include "vtkDataSet.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
@@ -20,6 +21,7 @@
 #include "vtkMultiProcessController.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkSmartPointer.h"
@@ -57,6 +59,61 @@ bool predictedCosts(const ptm::DecompositionResult& result, const ptm::SizeField
   };
   predicted = ptm::predictCost(result.complex, capped).tetrahedra;
   return true;
+}
+
+// x, y, z and the value of the point array `name` at every point of `source`
+// (the SizeArray's samples on this rank); an error naming the array when
+// it is missing or has more than one component.
+std::vector<double> localSizeSamples(
+  vtkDataSet* source, const char* what, const std::string& name, std::string& error)
+{
+  std::vector<double> xyzh;
+  vtkDataArray* values = source ? source->GetPointData()->GetArray(name.c_str()) : nullptr;
+  if (source && source->GetNumberOfPoints() > 0 && !values)
+  {
+    error = "SizeArray '" + name + "' is not a point array of the " + what;
+    return xyzh;
+  }
+  if (values && values->GetNumberOfComponents() != 1)
+  {
+    error = "SizeArray '" + name + "' has " + std::to_string(values->GetNumberOfComponents()) +
+      " components; a size is one number per point";
+    return xyzh;
+  }
+  const vtkIdType n = source ? source->GetNumberOfPoints() : 0;
+  xyzh.resize(4 * static_cast<std::size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    source->GetPoint(i, &xyzh[4 * static_cast<std::size_t>(i)]);
+    xyzh[4 * static_cast<std::size_t>(i) + 3] = values->GetComponent(i, 0);
+  }
+  return xyzh;
+}
+
+// Collective: the size field of the cutter (its SizeExpression, or the
+// SizeArray's samples from `sizeSource` or else `input`, whole on every
+// rank); false with the agreed message on every rank when it cannot be made.
+bool sizeFieldOf(vtkMultiProcessController* controller, const std::string& expression,
+  const std::string& arrayName, vtkDataSet* sizeSource, vtkPolyData* input, ptm::SizeSamples& samples,
+  ptm::SizeField& field, std::string& error)
+{
+  if (arrayName.empty())
+  {
+    field = ptm::sizeFieldOf(expression, error); // the same on every rank
+    return error.empty();
+  }
+  samples.arrayName = arrayName;
+  std::string localError;
+  const std::vector<double> local =
+    localSizeSamples(sizeSource ? sizeSource : input, sizeSource ? "SizeSource" : "input surface",
+      arrayName, localError);
+  if (!ptm::agreeAllSucceeded(controller, localError.empty(), localError, error))
+  {
+    return false;
+  }
+  samples.xyzh = ptm::wholeValuesOnEveryRank(controller, local);
+  field = ptm::sizeFieldOfSamples(samples, error); // whole samples: the same on every rank
+  return error.empty();
 }
 
 vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values)
@@ -101,6 +158,7 @@ vtkCxxSetObjectMacro(vtkVolumeBalancedCutter, Controller, vtkMultiProcessControl
 
 vtkVolumeBalancedCutter::vtkVolumeBalancedCutter()
 {
+  this->SetNumberOfInputPorts(2);
   this->SetController(vtkMultiProcessController::GetGlobalController());
 }
 
@@ -121,7 +179,37 @@ int vtkVolumeBalancedCutter::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
   ptm::requestWholeInput(inputVector);
+  ptm::requestWholeInput(inputVector, 1); // the SizeSource, when there is one
   return 1;
+}
+
+int vtkVolumeBalancedCutter::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    return 1;
+  }
+  return this->Superclass::FillInputPortInformation(port, info);
+}
+
+std::string vtkVolumeBalancedCutter::PropertyError()
+{
+  ptm::PropertyChecks checks("VolumeBalancedCutter");
+  checks.Require(this->NumberOfSubdomains >= 0 && this->NumberOfSubdomains <= 1000000,
+    "NumberOfSubdomains", "be 0 (one per rank) or between 1 and 1000000", this->NumberOfSubdomains);
+  checks.Require(this->BalanceTolerance >= 1e-6 && this->BalanceTolerance <= 0.5,
+    "BalanceTolerance", "lie in [1e-6, 0.5]", this->BalanceTolerance);
+  checks.Require(this->PlaneAlignmentAngle >= 0 && this->PlaneAlignmentAngle <= 45,
+    "PlaneAlignmentAngle", "lie in [0, 45] degrees", this->PlaneAlignmentAngle);
+  checks.Require(this->MaximumSize >= 0 && std::isfinite(this->MaximumSize), "MaximumSize",
+    "be 0 (automatic) or a positive length", this->MaximumSize);
+  checks.Require(this->SelfIntersectionCheckLimit >= 0, "SelfIntersectionCheckLimit",
+    "be a number of triangles, 0 or more", this->SelfIntersectionCheckLimit);
+  checks.Require(this->SizeExpression.empty() || this->SizeArray.empty(), "SizeExpression",
+    "be empty when SizeArray is set (one size field)", this->SizeExpression);
+  return checks.Ok() ? "" : checks.Message();
 }
 
 int vtkVolumeBalancedCutter::RequestData(
@@ -136,22 +224,19 @@ int vtkVolumeBalancedCutter::RequestData(
 
   this->UpdateProgress(0.0);
   // nonsense property values: the same on every rank, so every rank stops
-  ptm::PropertyChecks checks("VolumeBalancedCutter");
-  checks.Require(this->NumberOfSubdomains >= 0 && this->NumberOfSubdomains <= 1000000,
-    "NumberOfSubdomains", "be 0 (one per rank) or between 1 and 1000000", this->NumberOfSubdomains);
-  checks.Require(this->BalanceTolerance >= 1e-6 && this->BalanceTolerance <= 0.5,
-    "BalanceTolerance", "lie in [1e-6, 0.5]", this->BalanceTolerance);
-  checks.Require(this->PlaneAlignmentAngle >= 0 && this->PlaneAlignmentAngle <= 45,
-    "PlaneAlignmentAngle", "lie in [0, 45] degrees", this->PlaneAlignmentAngle);
-  checks.Require(this->MaximumSize >= 0 && std::isfinite(this->MaximumSize), "MaximumSize",
-    "be 0 (automatic) or a positive length", this->MaximumSize);
-  checks.Require(this->SelfIntersectionCheckLimit >= 0, "SelfIntersectionCheckLimit",
-    "be a number of triangles, 0 or more", this->SelfIntersectionCheckLimit);
-  std::string sizeError;
-  const ptm::SizeField size = ptm::sizeFieldOf(this->SizeExpression, sizeError);
-  if (!checks.Ok() || !sizeError.empty())
+  const std::string propertyError = this->PropertyError();
+  if (!propertyError.empty())
   {
-    vtkErrorMacro(<< (checks.Ok() ? "VolumeBalancedCutter: " + sizeError : checks.Message()));
+    vtkErrorMacro(<< propertyError);
+    output->Initialize();
+    return 0;
+  }
+  ptm::SizeSamples samples;
+  ptm::SizeField size;
+  if (!sizeFieldOf(controller, this->SizeExpression, this->SizeArray,
+        vtkDataSet::GetData(inputVector[1], 0), input, samples, size, message))
+  {
+    vtkErrorMacro("VolumeBalancedCutter: " << message);
     output->Initialize();
     return 0;
   }
@@ -259,6 +344,10 @@ int vtkVolumeBalancedCutter::RequestData(
   {
     fd->AddArray(cadFaces);
   }
+  if (!samples.xyzh.empty())
+  {
+    ptm::addSizeSamples(fd, samples); // for the triangulator and the mesher (SizeField.h)
+  }
 
   this->UpdateProgress(1.0);
   return 1;
@@ -275,5 +364,8 @@ void vtkVolumeBalancedCutter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PlaneAlignmentAngle: " << this->PlaneAlignmentAngle << "\n";
   os << indent << "CheckSelfIntersections: " << this->CheckSelfIntersections << "\n";
   os << indent << "SelfIntersectionCheckLimit: " << this->SelfIntersectionCheckLimit << "\n";
+  os << indent << "SizeExpression: " << this->SizeExpression << "\n";
+  os << indent << "SizeArray: " << this->SizeArray << "\n";
+  os << indent << "MaximumSize: " << this->MaximumSize << "\n";
   os << indent << "Controller: " << this->Controller << "\n";
 }

@@ -123,7 +123,19 @@ public:
   ///@}
 
   ///@{
-  /// With SizeExpression: the largest size the mesher will use, as its
+  /// A size field given as samples instead (leave SizeExpression empty):
+  /// the name of a point array of the SizeSource (input port 1, any data
+  /// set, e.g. a background mesh or an earlier solution) or, without one,
+  /// of the input surface. Between samples the size is interpolated
+  /// (SizeField.h); the samples travel in the complex's field data
+  /// (SizeFieldSamples), so the triangulator and the mesher follow them
+  /// without being told. Empty (default): no array.
+  vtkSetMacro(SizeArray, std::string);
+  vtkGetMacro(SizeArray, std::string);
+  ///@}
+
+  ///@{
+  /// With SizeExpression or SizeArray: the largest size the mesher will use, as its
   /// MaximumVolume sets it (the edge of that regular tetrahedron); 0
   /// (default) is the mesher's automatic size, the input's mean edge. The
   /// predicted cost takes the field no larger than this.
@@ -144,6 +156,10 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+  // The message naming the first nonsense property value; empty when all are fine.
+  std::string PropertyError();
 
   int NumberOfSubdomains = 0;
   int Strategy = RECURSIVE_BISECTION;
@@ -154,6 +170,7 @@ protected:
   vtkTypeBool CheckSelfIntersections = 1;
   vtkIdType SelfIntersectionCheckLimit = 2000000;
   std::string SizeExpression;
+  std::string SizeArray;
   double MaximumSize = 0.0;
   vtkMultiProcessController* Controller = nullptr;
 

@@ -39,6 +39,12 @@ def parse_arguments(argv):
     p.add_argument("--size-expression", default="",
                    help="size field: the edge length wanted at x, y, z, in the syntax of ParaView's Calculator "
                         "(e.g. '0.02 + 0.1 * abs(z)'); --size, when given, caps it")
+    p.add_argument("--size-array", default="",
+                   help="size field from samples: a point array of the input surface, or of --size-source; "
+                        "interpolated between its points; --size, when given, caps it")
+    p.add_argument("--size-source", default=None,
+                   help="a data set any ParaView reader opens (a background mesh, an earlier solution) "
+                        "whose point array --size-array gives the size")
     p.add_argument("--strategy", default="RecursiveBisection", choices=["RecursiveBisection", "ParallelPlanes"])
     p.add_argument("--direction", default="Inertia", choices=["Inertia", "LongestExtent", "X", "Y", "Z"])
     p.add_argument("--radius-edge-ratio", type=float, default=2.0, help="TetGen quality bound (default 2.0)")
@@ -142,6 +148,10 @@ def main(argv):
         fail("input file '%s' does not exist" % args.input)
     if args.subdomains < 0 or args.size < 0:
         fail("--subdomains and --size must not be negative")
+    if args.size_source and not args.size_array:
+        fail("--size-source needs --size-array, the name of its point array that gives the size")
+    if args.size_source and not os.path.isfile(args.size_source):
+        fail("size source '%s' does not exist" % args.size_source)
     from paraview import servermanager, simple
 
     # without ns the proxies become functions of paraview.simple
@@ -171,9 +181,16 @@ def main(argv):
     if args.wrap:
         surface = run("wrap", simple.AlphaWrap(Input=reader, RelativeAlpha=args.wrap_alpha,
                                                RelativeOffset=args.wrap_offset))
+    size_source = None
+    if args.size_source:
+        size_source = simple.OpenDataFile(args.size_source)
+        if size_source is None:
+            fail("ParaView has no reader for '%s'" % args.size_source)
+        run("read size source", size_source)
     cutter = run("cut", simple.VolumeBalancedCutter(
         Input=surface, NumberOfSubdomains=args.subdomains, Strategy=args.strategy, Direction=args.direction,
-        SizeExpression=args.size_expression, MaximumSize=args.size))
+        SizeExpression=args.size_expression, SizeArray=args.size_array, SizeSource=size_source,
+        MaximumSize=args.size))
     # rank 0's copy of the surface the cutter took (every rank asked for the whole)
     meshed = surface.GetClientSideObject().GetOutputDataObject(0)
     wrap_report = None

@@ -47,18 +47,23 @@ def read_pieces(pvtu):
     return np.vstack(points), np.vstack(tets), np.concatenate(ids)
 
 
-def main(argv):
-    if len(argv) != 3:
-        raise SystemExit(__doc__)
-    points, tets, ids = read_pieces(argv[0])
-    summary = json.load(open(argv[1]))
-    surface = meshio.read(argv[2])
+def check_valid(points, tets, surface_file):
+    """Positive volumes, and the volume of the surface in `surface_file` to 1e-9."""
+    surface = meshio.read(surface_file)
     q = surface.points[surface.cells_dict["triangle"]]
     enclosed = np.einsum("ij,ij->i", q[:, 0], np.cross(q[:, 1], q[:, 2])).sum() / 6
     p = points[tets]
     volumes = np.einsum("ij,ij->i", p[:, 1] - p[:, 0], np.cross(p[:, 2] - p[:, 0], p[:, 3] - p[:, 0])) / 6
     assert volumes.min() > 0, "a tetrahedron has volume %g" % volumes.min()
     assert abs(volumes.sum() / enclosed - 1) < 1e-9, "volume %.12g, input %.12g" % (volumes.sum(), enclosed)
+
+
+def main(argv):
+    if len(argv) != 3:
+        raise SystemExit(__doc__)
+    points, tets, ids = read_pieces(argv[0])
+    summary = json.load(open(argv[1]))
+    check_valid(points, tets, argv[2])
 
     edges = np.vstack([tets[:, [i, j]] for i in range(4) for j in range(i + 1, 4)])
     _, first = np.unique(np.sort(ids[edges], axis=1), axis=0, return_index=True)
