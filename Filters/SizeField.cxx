@@ -1,71 +1,20 @@
 #include "SizeField.h"
 
+#include "SampledSize.h"
 #include "SurfaceComplexArrays.h"
 
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFunctionParser.h"
-#include "vtkIdList.h"
-#include "vtkNew.h"
-#include "vtkPoints.h"
-#include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
-#include "vtkStaticPointLocator.h"
+#include "vtkNew.h"
 #include "vtkStringArray.h"
 
 #include <cmath>
-#include <memory>
 #include <sstream>
 
 namespace ptm
 {
-namespace
-{
-// Shepard's interpolation over this many nearest samples: enough that the
-// field is smooth between surface samples, few enough to stay local.
-constexpr int kNeighbours = 8;
-
-std::string pointText(const double* p)
-{
-  std::ostringstream s;
-  s.precision(9);
-  s << "(" << p[0] << ", " << p[1] << ", " << p[2] << ")";
-  return s.str();
-}
-
-// The locator and its scratch list: one per field, used by one thread (as
-// the expression's parser).
-struct Interpolator
-{
-  vtkNew<vtkPolyData> cloud;
-  vtkNew<vtkStaticPointLocator> locator;
-  vtkNew<vtkIdList> nearest;
-  std::vector<double> sizes;
-
-  double operator()(const Vec3& p)
-  {
-    this->locator->FindClosestNPoints(kNeighbours, p.data(), this->nearest);
-    double weighted = 0.0;
-    double total = 0.0;
-    for (vtkIdType k = 0; k < this->nearest->GetNumberOfIds(); ++k)
-    {
-      const vtkIdType id = this->nearest->GetId(k);
-      double q[3];
-      this->cloud->GetPoint(id, q);
-      const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
-        (p[2] - q[2]) * (p[2] - q[2]);
-      if (d2 == 0.0)
-      {
-        return this->sizes[static_cast<std::size_t>(id)];
-      }
-      weighted += this->sizes[static_cast<std::size_t>(id)] / d2;
-      total += 1.0 / d2;
-    }
-    return weighted / total;
-  }
-};
-} // namespace
-
 SizeField sizeFieldOf(const std::string& expression, std::string& error)
 {
   error.clear();
@@ -101,38 +50,13 @@ SizeField sizeFieldOf(const std::string& expression, std::string& error)
 
 SizeField sizeFieldOfSamples(const SizeSamples& samples, std::string& error)
 {
-  error.clear();
   SizeField field;
-  const std::size_t n = samples.xyzh.size() / 4;
-  if (n == 0)
-  {
-    error = "SizeArray '" + samples.arrayName + "' has no values (the size source has no points)";
-    return field;
-  }
-  auto state = std::make_shared<Interpolator>();
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(n));
-  state->sizes.resize(n);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    const double* s = &samples.xyzh[4 * i];
-    if (!(s[3] > 0) || !std::isfinite(s[3]))
-    {
-      std::ostringstream msg;
-      msg << "SizeArray '" << samples.arrayName << "' is " << s[3] << " at " << pointText(s)
-          << "; sizes must be positive and finite";
-      error = msg.str();
-      return field;
-    }
-    points->SetPoint(static_cast<vtkIdType>(i), s);
-    state->sizes[i] = s[3];
-  }
-  state->cloud->SetPoints(points);
-  state->locator->SetDataSet(state->cloud);
-  state->locator->BuildLocator();
   field.source = "SizeArray '" + samples.arrayName + "'";
-  field.size = [state](const Vec3& p) { return (*state)(p); };
+  field.size = sampledSize(samples.xyzh, field.source, error);
+  if (!error.empty())
+  {
+    field.size = nullptr;
+  }
   return field;
 }
 
@@ -194,8 +118,8 @@ bool sizesAt(const SizeField& field, const std::vector<Vec3>& points, std::vecto
     {
       std::ostringstream msg;
       msg.precision(9);
-      msg << field.source << " gives " << sizes[i] << " at " << pointText(points[i].data())
-          << "; sizes must be positive and finite";
+      msg << field.source << " gives " << sizes[i] << " at (" << points[i][0] << ", " << points[i][1]
+          << ", " << points[i][2] << "); sizes must be positive and finite";
       error = msg.str();
       return false;
     }

@@ -44,11 +44,9 @@ struct SizeSamples
   std::vector<double> xyzh;
 };
 
-// The field interpolated between `samples`: at a sample its own size;
-// elsewhere Shepard's mean of the 8 nearest samples weighted by the inverse
-// square distance (a point inside the body lies between surface samples, so
-// a field given on the surface alone reaches the interior). Empty, with
-// `error`, when there is no sample or a size is not positive and finite.
+// The field interpolated between `samples` (SampledSize.h: Shepard's mean of
+// the 8 nearest). Empty, with `error`, when there is no sample or a size is
+// not positive and finite.
 SizeField sizeFieldOfSamples(const SizeSamples& samples, std::string& error);
 
 // The samples as field data of the complex, and back (no samples: empty).

@@ -53,11 +53,7 @@ bool predictedCosts(const ptm::DecompositionResult& result, const ptm::SizeField
     return false;
   }
   const double cap = maximumSize > 0 ? maximumSize : result.inputMeanEdgeLength;
-  const ptm::SizeFunction capped = [&field, cap](const ptm::Vec3& p) {
-    const double h = field.size(p);
-    return cap > 0 && h > cap ? cap : h;
-  };
-  predicted = ptm::predictCost(result.complex, capped).tetrahedra;
+  predicted = ptm::predictCost(result.complex, ptm::cappedSize(field.size, cap)).tetrahedra;
   return true;
 }
 
@@ -259,6 +255,8 @@ int vtkVolumeBalancedCutter::RequestData(
                                                        : ptm::CutStrategy::RecursiveBisection;
   options.direction = static_cast<ptm::CutDirection>(this->Direction);
   options.criterion = static_cast<ptm::BalanceCriterion>(this->BalanceCriterion);
+  options.costSize = size.size;
+  options.costMaximumSize = this->MaximumSize;
   options.balanceTolerance = this->BalanceTolerance;
   options.alignmentAngleDegrees = this->PlaneAlignmentAngle;
   options.inputCheck.checkSelfIntersections = this->CheckSelfIntersections != 0;

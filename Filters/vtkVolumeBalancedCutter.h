@@ -49,7 +49,8 @@ public:
   {
     VOLUME = 0,
     BOUNDARY_FACETS = 1,
-    NODES = 2
+    NODES = 2,
+    PREDICTED_COST = 3
   };
 
   ///@{
@@ -74,8 +75,11 @@ public:
   ///@}
 
   ///@{
-  /// What is balanced: Volume (default), BoundaryFacets or Nodes.
-  vtkSetClampMacro(BalanceCriterion, int, VOLUME, NODES);
+  /// What is balanced: Volume (default), BoundaryFacets, Nodes, or
+  /// PredictedCost: the tetrahedra the size field (SizeExpression or
+  /// SizeArray, capped at MaximumSize) predicts, estimated on a grid of cost
+  /// samples inside the surface; without a size field it balances volume.
+  vtkSetClampMacro(BalanceCriterion, int, VOLUME, PREDICTED_COST);
   vtkGetMacro(BalanceCriterion, int);
   ///@}
 

@@ -158,7 +158,7 @@ HalfSpaceMeasure::HalfSpaceMeasure(
   : Complex(c)
   , Cell(cell)
   , Normal(normal)
-  , Criterion(criterion)
+  , Criterion(criterion == BalanceCriterion::PredictedCost ? BalanceCriterion::Volume : criterion)
 {
   for (std::size_t i = 0; i < c.triangles.size(); ++i)
   {
@@ -187,7 +187,7 @@ HalfSpaceMeasure::HalfSpaceMeasure(
     this->MinOffset = std::min(this->MinOffset, d);
     this->MaxOffset = std::max(this->MaxOffset, d);
   }
-  if (criterion == BalanceCriterion::Nodes)
+  if (this->Criterion == BalanceCriterion::Nodes)
   {
     std::vector<Index> surfacePoints;
     for (std::size_t i : this->Triangles)
@@ -204,7 +204,7 @@ HalfSpaceMeasure::HalfSpaceMeasure(
       this->SortedValues.push_back(dot(normal, c.points[p]));
     }
   }
-  else if (criterion == BalanceCriterion::BoundaryFacets)
+  else if (this->Criterion == BalanceCriterion::BoundaryFacets)
   {
     for (std::size_t i : this->Triangles)
     {
@@ -217,7 +217,7 @@ HalfSpaceMeasure::HalfSpaceMeasure(
     }
   }
   std::sort(this->SortedValues.begin(), this->SortedValues.end());
-  this->Total = criterion == BalanceCriterion::Volume
+  this->Total = this->Criterion == BalanceCriterion::Volume
     ? this->below(this->MaxOffset + 1.0 + std::fabs(this->MaxOffset))
     : static_cast<double>(this->SortedValues.size());
 }

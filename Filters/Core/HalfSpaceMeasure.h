@@ -10,7 +10,7 @@
 // regions (polygons with holes) are integrated through their boundary edges
 // with Green's theorem, using an in-plane field that vanishes on the cut too.
 // Nodes / BoundaryFacets: counts of surface points / surface triangles
-// (by centroid) below.
+// (by centroid) below. PredictedCost: as Volume (see the enum).
 #include "SurfaceComplex.h"
 
 #include <string>
@@ -22,7 +22,11 @@ enum class BalanceCriterion
 {
   Volume,
   BoundaryFacets,
-  Nodes
+  Nodes,
+  // the tetrahedra a size field predicts (PredictedCost.h, cost samples);
+  // the cuts are made by volume at the volume fraction that splits the
+  // part's cost as wanted, so this class measures it as Volume
+  PredictedCost
 };
 
 class HalfSpaceMeasure

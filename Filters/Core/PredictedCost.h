@@ -23,6 +23,7 @@
 //  (as in the interface mesher); a count the quadrature of such a jump
 //  makes negative is 0. The same complex and field always give the same
 //  numbers.
+#include "HalfSpaceMeasure.h"
 #include "InterfaceTriangulation.h" // SizeFunction
 #include "SurfaceComplex.h"
 
@@ -38,5 +39,38 @@ struct PredictedCost
 };
 
 PredictedCost predictCost(const SurfaceComplex& complex, const SizeFunction& size);
+
+// The field no larger than `cap` (the mesher's largest size: it never
+// meshes coarser); `size` itself when cap is not positive.
+SizeFunction cappedSize(const SizeFunction& size, double cap);
+
+// Cost samples, for cutting by cost (BalanceCriterion::PredictedCost): the
+// nodes of a regular grid inside a closed surface, each weighted by the
+// regular tetrahedra of the field in its grid cell (cell volume x 6 sqrt(2)
+// / h^3, h floored as above), and the part of the complex each lies in.
+// The grid has about `gridPoints` nodes over the bounding box, shifted off
+// round coordinates; a node is inside where the winding number of the
+// surface's crossings along its z column is positive (robust to nested
+// shells; a column through an edge, which the shift makes unlikely, may
+// misplace the nodes of one column, an error of one sample in a cost
+// estimate). Deterministic.
+struct CostSamples
+{
+  std::vector<Vec3> points;
+  std::vector<double> weights;
+  std::vector<int> cells; // the part of the complex being cut each lies in (0 at first)
+  double spacing = 0;     // of the grid
+};
+CostSamples sampleCost(const TriangleSurface& closed, const SizeFunction& size, std::size_t gridPoints);
+
+// For a cut of part `cell` by planes of normal n: the fraction of the
+// part's volume below the offset where `fraction` of its samples' weight
+// lies below, so a cutter that balances volume can balance cost. Without
+// samples in the part, `fraction` itself.
+double volumeFractionForCost(const CostSamples& samples, const SurfaceComplex& complex, int cell,
+  const Vec3& normal, double fraction);
+
+// After part `cell` was cut by n.x = offset: its samples go to `below` or `above`.
+void moveSamples(CostSamples& samples, int cell, const Vec3& normal, double offset, int below, int above);
 } // namespace ptm
 #endif

@@ -39,6 +39,7 @@ const char* toString(BalanceCriterion c)
     case BalanceCriterion::Volume: return "Volume";
     case BalanceCriterion::BoundaryFacets: return "BoundaryFacets";
     case BalanceCriterion::Nodes: return "Nodes";
+    case BalanceCriterion::PredictedCost: return "PredictedCost";
   }
   return "?";
 }
@@ -358,7 +359,8 @@ PartCut::PartCut(SurfaceComplex& complex, const DecompositionOptions& options_,
   , fraction(fraction_)
   , solveTolerance(solveTolerance_)
   , planeId(static_cast<int>(complex.planes.size()))
-  , volumeCriterion(options_.criterion == BalanceCriterion::Volume)
+  , volumeCriterion(options_.criterion == BalanceCriterion::Volume ||
+      options_.criterion == BalanceCriterion::PredictedCost)
 {
   const double cellVolume = volumeCriterion ? labelVolume(c, cell) : 0.0;
   target = fraction * cellVolume;
@@ -833,12 +835,36 @@ DecompositionResult decomposeVolumeBalanced(
   std::vector<int> leaves; // cell ids in subdomain order
   std::string error;
 
+  // cutting by cost: each part is cut by volume at the volume fraction
+  // that splits its cost samples as wanted, and the samples follow the cuts
+  // (without a field the cost is the volume's: cut and measured as Volume)
+  const bool byCost = options.criterion == BalanceCriterion::PredictedCost && options.costSize;
+  const double costCap = options.costMaximumSize > 0 ? options.costMaximumSize : result.inputMeanEdgeLength;
+  CostSamples costSamples = byCost
+    ? sampleCost(surface, cappedSize(options.costSize, costCap), options.costSamples)
+    : CostSamples{};
   auto cut = [&](int cell, const Vec3& proposedNormal, double fraction, int parts, int& below,
                int& above) -> bool {
     below = nextCell++;
     above = nextCell++;
-    PartCut part(c, options, result, cell, fraction, parts, below, above, solveTolerance);
-    return part.run(proposedNormal, error);
+    DecompositionOptions partOptions = options;
+    if (byCost)
+    {
+      // the balance tolerance is of cost; in volume it is smaller where the
+      // cost is denser than the part's mean
+      const double costFraction = fraction;
+      fraction = volumeFractionForCost(costSamples, c, cell, proposedNormal, fraction);
+      partOptions.balanceTolerance *=
+        std::min({ 1.0, fraction / costFraction, (1.0 - fraction) / (1.0 - costFraction) });
+    }
+    PartCut part(c, partOptions, result, cell, fraction, parts, below, above, solveTolerance);
+    if (!part.run(proposedNormal, error))
+    {
+      return false;
+    }
+    const CuttingPlane& plane = c.planes.back();
+    moveSamples(costSamples, cell, plane.normal, dot(plane.normal, plane.origin), below, above);
+    return true;
   };
 
   if (K > 1 && options.strategy == CutStrategy::ParallelPlanes)
@@ -935,8 +961,14 @@ DecompositionResult decomposeVolumeBalanced(
     result.error = msg.str();
     return result;
   }
-  result.subdomainMeasure =
-    measureSubdomains(c, options.criterion, result.subdomainVolume);
+  // by cost: the field's regular tetrahedra by quadrature on the final
+  // subdomains, more exact than the samples (whose grid columns go whole
+  // to one side of a plane)
+  result.subdomainMeasure = byCost
+    ? predictCost(c, cappedSize(options.costSize, costCap)).regularTetrahedra
+    : measureSubdomains(c,
+        options.criterion == BalanceCriterion::PredictedCost ? BalanceCriterion::Volume : options.criterion,
+        result.subdomainVolume);
   double total = 0;
   for (double m : result.subdomainMeasure)
   {
@@ -960,7 +992,10 @@ DecompositionResult decomposeVolumeBalanced(
     std::ostringstream msg;
     msg << "balance tolerance " << options.balanceTolerance
         << " not reached: the worst subdomain deviates by " << result.maximumImbalance
-        << " from its target (the surface is too coarse near a plane for this tolerance)";
+        << " from its target "
+        << (byCost ? "by predicted cost (the planes were placed by an estimate on a grid of samples; "
+                     "more subdomains than ranks even the ranks out)"
+                   : "(the surface is too coarse near a plane for this tolerance)");
     result.warnings.push_back(msg.str());
   }
   result.ok = true;

@@ -15,6 +15,7 @@
 #include "HalfSpaceMeasure.h"
 #include "PlaneAlignment.h"
 #include "PlaneSplit.h"
+#include "PredictedCost.h"
 #include "SurfaceInputCheck.h"
 #include "SurfaceOrientation.h"
 
@@ -42,6 +43,14 @@ struct DecompositionOptions
   // (PlaneAlignment.h); 0 turns that off
   double alignmentAngleDegrees = 15.0;
   InputCheckOptions inputCheck;   // see SurfaceInputCheck.h
+  // BalanceCriterion::PredictedCost: the size field whose tetrahedra are
+  // balanced (empty: a uniform size, which balances volume), no larger than
+  // costMaximumSize (the mesher's largest size; 0: the input's mean edge,
+  // its automatic size), sampled at about costSamples grid nodes over the
+  // bounding box (PredictedCost.h: sampleCost)
+  SizeFunction costSize;
+  double costMaximumSize = 0;
+  std::size_t costSamples = 1000000;
 };
 
 struct DecompositionResult
@@ -54,7 +63,7 @@ struct DecompositionResult
   OrientationReport orientation;
   PlaneSplitStats splitStats;
   std::vector<double> subdomainVolume;  // divergence theorem over each closed subdomain
-  std::vector<double> subdomainMeasure; // by the balance criterion
+  std::vector<double> subdomainMeasure; // by the balance criterion (PredictedCost: sample weights)
   double totalVolume = 0;               // of the oriented input surface
   double inputMeanEdgeLength = 0;       // of the merged input triangles: the default mesh size
   double maximumImbalance = 0;          // max over subdomains of |measure / target - 1|

@@ -15,8 +15,9 @@ Checks, on every edge of the tetrahedra (each once, by GlobalPointIds):
 * the field is followed, not just a finer uniform size: the median edge in
   z < -0.5 is at most half the median edge in 0 < z < 0.5;
 * the ranks share the work by the cost the field predicts: max/mean
-  tetrahedra per rank at most 1.10 (1.055 measured; 1.298 when the
-  subdomains went to the ranks by volume);
+  tetrahedra per rank at most 1.10 (1.000 measured with the cuts by
+  predicted cost; 1.055 with the cuts by volume and the subdomains given to
+  ranks by cost; 1.298 with both by volume);
 * the tetrahedron count is between 1 and 2.5 times what the field predicts
   for regular tetrahedra, integral of 6 sqrt(2) / h^3 over the ball (TetGen's
   tetrahedra are smaller than regular ones: 1.9 x for a uniform size).
