@@ -22,8 +22,9 @@ PACKAGES=(
   libgtest-dev clang libclang-rt-14-dev xvfb xauth
   # comparison peers and test geometry
   gmsh tetgen python3-meshio python3-matplotlib time
-  # the FEM solver on the pieces (Scripts/solve_elasticity.py): PETSc with MUMPS and GAMG
-  python3-petsc4py python3-mpi4py
+  # the FEM solver on the pieces (Scripts/solve_elasticity.py): dolfinx 0.5 (FEniCSx:
+  # UFL, FFCx's JIT with gcc) on PETSc with MUMPS and GAMG
+  python3-dolfinx python3-petsc4py python3-mpi4py
   # CAD input (STEP, IGES, BREP) through OpenCASCADE 7.6, and its sample
   # files (occt-misc: /usr/share/opencascade/data), which the CAD tests read
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The paper's elastic ball, meshed and solved on 2 MPI ranks: Data/ball.stl is
 # meshed into K = 4 subdomains (out/ball.pvtu, one piece per rank), then each
-# rank solves linear elasticity on its own piece only (PETSc, CG + GAMG):
+# rank hands its own piece only to dolfinx (cells kept in place) and solves
+# linear elasticity on it (UFL, PETSc CG + GAMG):
 # points below zmin + 0.1 R held, a downward traction of 1 per unit area on the
 # boundary triangles above zmax - 0.5 R, E = 1000, nu = 0.3. Prints the applied
 # load and the support reaction, writes out/ball_solution.pvtu (displacement,
@@ -16,7 +17,7 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_
 mkdir -p out
 mpiexec -n 2 --oversubscribe pvbatch Scripts/tetmesh.py Data/ball.stl \
   -o out/ball.pvtu --subdomains 4 --size 0.1
-# the solver runs in the system Python, where petsc4py lives
+# the solver runs in the system Python, where dolfinx and petsc4py live
 mpiexec -n 2 --oversubscribe /usr/bin/python3 Scripts/solve_elasticity.py out/ball.pvtu \
   --E 1000 --nu 0.3 --fix-below 0.1 --traction-above 0.5 --traction 0,0,-1 \
   --check-equilibrium 1e-8 -o out/ball_solution.pvtu --json out/ball_solution.json

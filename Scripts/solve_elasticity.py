@@ -1,12 +1,18 @@
 #!/usr/bin/python3
-"""Linear elasticity with PETSc (petsc4py, MUMPS or CG+GAMG) on the mesher's pieces,
-in place: rank r reads only piece r of the .pvtu (and of *_boundary.pvtp) and
-keeps exactly those tetrahedra.
+"""Linear elasticity with FEniCSx (dolfinx 0.5, PETSc CG+GAMG or MUMPS) on the
+mesher's pieces, in place: rank r reads only piece r of the .pvtu (and of
+*_boundary.pvtp), hands exactly those tetrahedra to dolfinx and keeps them.
 
   mpiexec -n P /usr/bin/python3 Scripts/solve_elasticity.py out/ball.pvtu \
       --pressure 1 --check-exact 1e-8                  # the exact test
   mpiexec -n P /usr/bin/python3 Scripts/solve_elasticity.py out/ball.pvtu \
       --fix-below 0.1 --traction-above 0.5 --traction 0,0,-1 -o out/ball_solution.pvtu
+
+The engine is dolfinx: the mesh is built by dolfinx.mesh.create_mesh from each
+rank's own tetrahedra (a cell partitioner that keeps every cell on its rank,
+see keep_cells_partitioner), the problem is written in UFL (P1 vector
+elements, pressure and traction as ds terms on the boundary facets tagged from
+the boundary piece), assembled by dolfinx and solved by PETSc.
 
 Boundary conditions: loads act on the mesher's boundary triangles (port 1), chosen
 by SourceFaceId (--traction-faces) or by height (--traction-above); supports
@@ -164,8 +170,10 @@ def exchange(comm, send_lists):
 
 
 def contiguous_numbering(comm, piece):
-    """New vertex numbers, contiguous per owning rank (PETSc's rows of
-    rank r are one contiguous block). Owned points (vtkGhostType 0) are numbered in GlobalPointIds
+    """New vertex numbers, contiguous per owning rank: dolfinx's create_mesh
+    takes global node i from row i - offset_r of rank r's coordinate block
+    (blocks in rank order), so rank r passes the points it owns, numbered
+    offset_r, offset_r + 1, ..., and its cells in these numbers. Owned points (vtkGhostType 0) are numbered in GlobalPointIds
     order after the prefix sum of the owned counts; a copy learns its number
     through a directory rank (gid mod P), since a rank does not know which
     other rank owns its copies."""
@@ -213,67 +221,8 @@ def directory_answers(received, size):
     return replies, err
 
 
-# ---------------------------------------------------------------- PETSc assembly
-
-def element_stiffness(x, tets, E, nu):
-    """P1 elasticity element matrices (m, 12, 12), dofs ordered (vertex,
-    component): K[a i, b j] = V (lambda g_a,i g_b,j + mu g_a,j g_b,i
-    + mu delta_ij g_a.g_b), g the constant barycentric gradients."""
-    d = x[tets[:, 1:]] - x[tets[:, :1]]                       # edges as rows
-    vol = np.abs(np.linalg.det(d)) / 6.0
-    if np.any(vol <= 0):
-        raise SolveError(f"{int(np.sum(vol <= 0))} tetrahedra of zero volume")
-    g = np.empty((len(tets), 4, 3))
-    g[:, 1:] = np.transpose(np.linalg.inv(d), (0, 2, 1))      # grad of xi_i = column i of D^-1
-    g[:, 0] = -g[:, 1:].sum(axis=1)
-    mu, lmbda = E / (2 * (1 + nu)), E * nu / ((1 + nu) * (1 - 2 * nu))
-    k = lmbda * np.einsum("kai,kbj->kaibj", g, g) + mu * np.einsum("kaj,kbi->kaibj", g, g)
-    k += mu * np.einsum("kac,kbc->kab", g, g)[:, :, None, :, None] * np.eye(3)[None, None, :, None, :]
-    return (vol[:, None, None, None, None] * k).reshape(-1, 12, 12)
-
-
-def preallocation(piece, new, n_owned, offset):
-    """Nonzeros per owned scalar row (diagonal and off-diagonal block) from
-    the vertex graph of this rank's tetrahedra, doubled on vertices of the
-    piece's surface, where other ranks may add columns; a low guess only
-    costs PETSc a reallocation (allowed below)."""
-    t = new[piece["tets"]]
-    pairs = np.concatenate([t[:, [i, j]] for i in range(4) for j in range(4)])
-    pairs = np.unique(pairs, axis=0)
-    mine = (pairs[:, 0] >= offset) & (pairs[:, 0] < offset + n_owned)
-    pairs = pairs[mine]
-    row = pairs[:, 0] - offset
-    diag = (pairs[:, 1] >= offset) & (pairs[:, 1] < offset + n_owned)
-    d = np.bincount(row[diag], minlength=n_owned)
-    o = np.bincount(row[~diag], minlength=n_owned)
-    faces = np.sort(np.concatenate([t[:, [0, 1, 2]], t[:, [0, 1, 3]], t[:, [0, 2, 3]], t[:, [1, 2, 3]]]), axis=1)
-    uf, count = np.unique(faces, axis=0, return_counts=True)
-    surf = np.unique(uf[count == 1])
-    surf = surf[(surf >= offset) & (surf < offset + n_owned)] - offset
-    d[surf] *= 2
-    o[surf] = 2 * o[surf] + 8
-    return np.repeat(np.minimum(3 * d, 3 * n_owned), 3).astype(np.int32), np.repeat(3 * o, 3).astype(np.int32)
-
-
-def assemble_stiffness(comm, piece, new, n_owned, E, nu):
-    """The global stiffness matrix, rows of the points this rank owns;
-    each rank adds its own tetrahedra only (PETSc sends the entries of
-    interface rows to their owners in assemble())."""
-    from petsc4py import PETSc
-    offset = comm.exscan(n_owned) or 0
-    d_nnz, o_nnz = preallocation(piece, new, n_owned, offset)
-    A = PETSc.Mat().createAIJ(((3 * n_owned, PETSc.DETERMINE), (3 * n_owned, PETSc.DETERMINE)),
-                              bsize=3, nnz=(d_nnz, o_nnz), comm=comm)
-    A.setOption(PETSc.Mat.Option.NEW_NONZERO_ALLOCATION_ERR, False)
-    ke = collective(comm, "element matrices", element_stiffness, piece["x"], piece["tets"], E, nu)
-    dofs = (3 * new[piece["tets"]][:, :, None] + np.arange(3)).reshape(-1, 12).astype(PETSc.IntType)
-    for k in range(len(dofs)):
-        A.setValues(dofs[k], dofs[k], ke[k], addv=PETSc.InsertMode.ADD_VALUES)
-    A.assemble()
-    return A
-
-
 def owned_coordinates(comm, piece, new, n_owned):
+    """The coordinates of the points this rank owns, row k = number offset + k."""
     offset = comm.exscan(n_owned) or 0
     owned = (piece["ghost"] & 1) == 0
     x = np.empty((n_owned, 3))
@@ -281,15 +230,125 @@ def owned_coordinates(comm, piece, new, n_owned):
     return x
 
 
-def gather_piece_values(u, rows):
-    """The solution at every point of the piece, copies included (a PETSc
-    scatter from the distributed vector)."""
-    from petsc4py import PETSc
-    local = PETSc.Vec().createSeq(len(rows), comm=PETSc.COMM_SELF)
-    iset = PETSc.IS().createGeneral(rows.astype(PETSc.IntType), comm=PETSc.COMM_SELF)
-    scatter = PETSc.Scatter().create(u, iset, local, None)
-    scatter.scatter(u, local, addv=PETSc.InsertMode.INSERT_VALUES, mode=PETSc.ScatterMode.FORWARD)
-    return local.getArray().copy()
+def tet_volumes(x, tets):
+    t = x[tets]
+    vol = np.abs(np.linalg.det(t[:, 1:] - t[:, :1])) / 6.0
+    if np.any(vol <= 0):
+        raise SolveError(f"{int(np.sum(vol <= 0))} tetrahedra of zero volume")
+    return vol
+
+
+# ---------------------------------------------------------------- the dolfinx mesh
+
+def keep_cells_partitioner(comm, n_cells):
+    """A cell partitioner for dolfinx.mesh.create_mesh that moves no cell.
+
+    dolfinx 0.5.2 finds the vertices shared between ranks only among the
+    vertices that touch both an owned and a ghost cell (Topology.cpp,
+    vertex_ownerhip_groups), and the ghost cells come from the partitioner:
+    destination ranks after the first. So every cell goes to this rank (its
+    first destination) and, as a ghost, to the ranks holding a cell across
+    one of its facets (from the distributed dual graph, whose off-rank
+    neighbours are global cell numbers: exscan of the cell counts + local
+    index). create_mesh asks for facet ghosts, matches the vertices, and with
+    GhostMode.none drops the ghost cells again: each rank keeps exactly its
+    own cells. Returning the rank alone makes dolfinx share no vertex."""
+    from dolfinx.cpp.graph import AdjacencyList_int32
+    from dolfinx.cpp.mesh import create_cell_partitioner
+    rank = comm.Get_rank()
+    starts = np.r_[0, np.cumsum(comm.allgather(n_cells))]
+
+    def destinations(_comm, _nparts, dual, _ghosting):
+        nbr, off = np.asarray(dual.array), np.asarray(dual.offsets)
+        owner = np.searchsorted(starts, nbr, side="right") - 1
+        cell = np.repeat(np.arange(dual.num_nodes), np.diff(off))
+        other = owner != rank
+        pairs = np.unique(np.column_stack([cell[other], owner[other]]), axis=0)
+        offsets = np.r_[0, np.cumsum(np.bincount(pairs[:, 0], minlength=dual.num_nodes) + 1)]
+        data = np.empty(offsets[-1], dtype=np.int32)
+        data[offsets[:-1]] = rank
+        nth = np.arange(len(pairs)) - np.searchsorted(pairs[:, 0], pairs[:, 0])
+        data[offsets[pairs[:, 0]] + 1 + nth] = pairs[:, 1]
+        return AdjacencyList_int32(data, offsets.astype(np.int32))
+
+    return create_cell_partitioner(destinations)
+
+
+def create_mesh(comm, piece, new, n_owned):
+    """The dolfinx mesh of all ranks' pieces, each rank's cells in place.
+    Returns the mesh, the piece tetrahedron of every dolfinx cell and the
+    piece point of every dolfinx geometry node; fails unless dolfinx kept
+    exactly this rank's tetrahedra and every point of the mesh once."""
+    import dolfinx.mesh
+    import ufl
+    tets = piece["tets"]
+    domain = ufl.Mesh(ufl.VectorElement("Lagrange", ufl.tetrahedron, 1))
+    msh = dolfinx.mesh.create_mesh(comm, new[tets].astype(np.int64),
+                                   owned_coordinates(comm, piece, new, n_owned), domain,
+                                   ghost_mode=dolfinx.mesh.GhostMode.none,
+                                   partitioner=keep_cells_partitioner(comm, len(tets)))
+    cells = msh.topology.index_map(3)
+    tet_of_cell = np.asarray(msh.topology.original_cell_index) - (comm.exscan(len(tets)) or 0)
+    kept = (cells.size_local == len(tets) and cells.num_ghosts == 0
+            and np.array_equal(np.sort(tet_of_cell), np.arange(len(tets))))
+    order = np.argsort(new)
+    gi = np.asarray(msh.geometry.input_global_indices)
+    pos = np.clip(np.searchsorted(new[order], gi), 0, len(order) - 1)
+    point_of_node = order[pos]
+    nodes_ok = (len(gi) == len(new) and np.array_equal(new[point_of_node], gi)
+                and np.array_equal(msh.geometry.x, piece["x"][point_of_node]))
+    n_points = comm.allreduce(n_owned)
+    if not comm.allreduce(kept, op=MPI.LAND):
+        raise SolveError("dolfinx did not keep every rank's tetrahedra in place")
+    if not comm.allreduce(nodes_ok, op=MPI.LAND) or msh.topology.index_map(0).size_global != n_points:
+        raise SolveError(f"dolfinx's mesh has {msh.topology.index_map(0).size_global} vertices, "
+                         f"the pieces {n_points} points (shared points not matched)")
+    return msh, tet_of_cell, point_of_node
+
+
+def piece_dofs(msh, V, point_of_node, n_points):
+    """The block dof of V (P1 vector) at every piece point: through the
+    cells, whose geometry nodes and dofs are listed in the same order."""
+    nodes = msh.geometry.dofmap.array.reshape(-1, 4)
+    dofs = V.dofmap.list.array.reshape(-1, 4)
+    dof_of_point = np.full(n_points, -1, dtype=np.int32)
+    dof_of_point[point_of_node[nodes]] = dofs
+    imap = V.dofmap.index_map
+    if np.any(dof_of_point < 0) or imap.size_local + imap.num_ghosts != n_points:
+        raise SolveError("the P1 dofs are not the piece's points one to one")
+    return dof_of_point
+
+
+def boundary_tags(comm, msh, point_of_node, btri, select):
+    """Facet tags from the boundary piece: 1 on every boundary triangle, 2 on
+    the loaded ones. Each boundary triangle must be an exterior facet of
+    dolfinx's mesh (owned by this rank: the boundary piece of rank r only has
+    faces of rank r's tetrahedra), and the counts must agree."""
+    import dolfinx.mesh
+    top = msh.topology
+    top.create_connectivity(2, 3)
+    top.create_connectivity(2, 0)
+    exterior = np.asarray(dolfinx.mesh.exterior_facet_indices(top), dtype=np.int32)
+    point_of_vertex = np.empty(top.index_map(0).size_local + top.index_map(0).num_ghosts, dtype=np.int64)
+    point_of_vertex[top.connectivity(3, 0).array.reshape(-1, 4)] = \
+        point_of_node[msh.geometry.dofmap.array.reshape(-1, 4)]
+    facet_points = point_of_vertex[top.connectivity(2, 0).array.reshape(-1, 3)[exterior]]
+    both = np.vstack([np.sort(facet_points, axis=1), np.sort(btri, axis=1)])
+    _, key = np.unique(both, axis=0, return_inverse=True)
+    key = key.ravel()
+    facet_key, tri_key = key[:len(exterior)], key[len(exterior):]
+    where = np.full(len(both), -1, dtype=np.int64)
+    where[facet_key] = np.arange(len(exterior))
+    facet_of_tri = where[tri_key]
+    matched = bool(np.all(facet_of_tri >= 0)) and len(np.unique(facet_of_tri)) == len(btri)
+    n_ext, n_tri = comm.allreduce(len(exterior)), comm.allreduce(len(btri))
+    if not comm.allreduce(matched, op=MPI.LAND) or n_ext != n_tri:
+        raise SolveError(f"the boundary piece's triangles ({n_tri}) are not dolfinx's exterior "
+                         f"facets ({n_ext})")
+    facets = exterior[facet_of_tri]
+    values = np.where(select, 2, 1).astype(np.int32)
+    order = np.argsort(facets)
+    return dolfinx.mesh.meshtags(msh, 2, facets[order], values[order])
 
 
 # ---------------------------------------------------------------- loads and supports
@@ -312,37 +371,18 @@ def boundary_to_piece(piece):
     return order[pos][piece["btris"]]
 
 
-def boundary_loads(args, piece, btri, lo, hi):
-    """Consistent P1 nodal forces of a constant pressure / traction on each
-    selected boundary triangle: a third of (traction x area) per vertex.
-    Returns (piece point index, force) rows and the selected area."""
+def loaded_triangles(args, piece, btri, lo, hi):
+    """The boundary triangles the traction acts on (by SourceFaceId or by
+    height) and their area."""
     p = piece["x"][btri]
-    area_vec = 0.5 * np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
-    area = np.linalg.norm(area_vec, axis=1)
-    force = -args.pressure * area_vec
+    area = 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
     select = np.zeros(len(btri), dtype=bool)
     if args.traction_faces is not None:
         select |= np.isin(piece["bface"], args.traction_faces)
     if args.traction_above is not None:
         half = 0.5 * (hi[2] - lo[2])
         select |= p[:, :, 2].mean(axis=1) > hi[2] - args.traction_above * half
-    force = force + select[:, None] * args.traction[None, :] * area[:, None]
-    pts = btri.ravel()
-    return pts, np.repeat(force / 3.0, 3, axis=0), float(area[select].sum())
-
-
-def outward_check(comm, piece, btri):
-    """Σ centroid·(area normal) over the boundary is 3·volume only if every
-    boundary triangle faces outwards; a pressure load depends on it."""
-    p = piece["x"][btri]
-    flux = np.einsum("ij,ij->", p.mean(axis=1), 0.5 * np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]))
-    t = piece["x"][piece["tets"]]
-    vol = np.abs(np.linalg.det(t[:, 1:] - t[:, :1])).sum() / 6.0
-    flux, vol = comm.allreduce(flux), comm.allreduce(vol)
-    if abs(flux / 3.0 - vol) > 1e-8 * vol:
-        raise SolveError(f"boundary triangles are not all outward: flux/3 = {flux / 3:.12g} "
-                         f"but the tetrahedra's volume is {vol:.12g}")
-    return vol
+    return select, float(area[select].sum())
 
 
 def argmax_global(comm, score, gid, x):
@@ -361,7 +401,8 @@ def pin_points(comm, piece):
     """Three points and components that remove the six rigid motions:
     A = global id 0 (3 components); B = farthest from A (the 2 components
     other than B-A's largest); C = farthest from line AB (the component
-    largest in (B-A)x(C-A), the direction C moves under rotation about AB)."""
+    largest in (B-A)x(C-A), the direction C moves under rotation about AB).
+    Returns (global id, components, coordinates), known on every rank."""
     x, gid = piece["x"], piece["gid"]
     ga, a = argmax_global(comm, (gid == 0).astype(float), gid, x)
     gb, b = argmax_global(comm, np.linalg.norm(x - a, axis=1), gid, x)
@@ -370,42 +411,107 @@ def pin_points(comm, piece):
     gc, c = argmax_global(comm, np.linalg.norm(r - np.outer(r @ d, d), axis=1), gid, x)
     kb = int(np.argmax(np.abs(b - a)))
     kc = int(np.argmax(np.abs(np.cross(b - a, c - a))))
-    return [(ga, [0, 1, 2]), (gb, [k for k in range(3) if k != kb]), (gc, [kc])]
+    return [(ga, [0, 1, 2], a), (gb, [k for k in range(3) if k != kb], b), (gc, [kc], c)]
 
 
-def support_points(args, comm, piece, btri, lo, hi):
-    """(piece point index, component) pairs to hold at zero."""
+def supported_points(args, piece, btri, lo, hi):
+    """Piece points held at zero (all three components)."""
     fixed = np.zeros(len(piece["x"]), dtype=bool)
     if args.fix_below is not None:
         half = 0.5 * (hi[2] - lo[2])
         fixed |= piece["x"][:, 2] < lo[2] + args.fix_below * half
     if args.fix_faces is not None:
         fixed[btri[np.isin(piece["bface"], args.fix_faces)].ravel()] = True
-    idx = np.flatnonzero(fixed)
-    return np.repeat(idx, 3), np.tile([0, 1, 2], len(idx))
+    return fixed
 
 
-# ---------------------------------------------------------------- solve
-
-def petsc_rows(gblock, pts, comps):
-    return (3 * gblock[pts] + comps).astype(np.int32)
-
-
-def constrain(A, b, rows, values):
-    """Holds the given global rows at the given values, symmetric (rows and
-    columns), b corrected. Any rank may name any row, also one owned by
-    another rank: a marker vector gathers them to their owners first."""
+def consistent_blocks(V, blocks):
+    """The given block dofs together with those any other rank gave for the
+    same points: a point of a fixed face (--fix-faces) is also on ranks whose
+    boundary piece does not have that face, and a Dirichlet dof must be
+    marked on every rank that has it (dolfinx zeroes rows and columns cell by
+    cell)."""
+    from dolfinx import fem
     from petsc4py import PETSc
-    mark, xbc = A.createVecRight(), A.createVecRight()
-    mark.setValues(rows, np.ones(len(rows)), addv=PETSc.InsertMode.INSERT_VALUES)
-    xbc.setValues(rows, values, addv=PETSc.InsertMode.INSERT_VALUES)
-    for v in (mark, xbc):
-        v.assemblyBegin()
-        v.assemblyEnd()
-    start = mark.getOwnershipRange()[0]
-    owned = (np.flatnonzero(mark.array == 1.0) + start).astype(np.int32)
-    A.zeroRowsColumns(owned, 1.0, xbc, b)
-    return owned
+    mark = fem.Function(V)
+    mark.x.array[:] = 0.0
+    mark.x.array.reshape(-1, 3)[blocks] = 1.0
+    mark.vector.ghostUpdate(addv=PETSc.InsertMode.ADD, mode=PETSc.ScatterMode.REVERSE)
+    mark.vector.ghostUpdate(addv=PETSc.InsertMode.INSERT, mode=PETSc.ScatterMode.FORWARD)
+    return np.flatnonzero(mark.x.array.reshape(-1, 3)[:, 0] > 0).astype(np.int32)
+
+
+def dirichlet_conditions(args, comm, piece, V, dof_of_point, btri, lo, hi):
+    """dolfinx Dirichlet conditions: the supports at zero, or, without
+    supports, the three pinned points at the exact pressure solution's
+    values. Returns the conditions and the pins (None with supports)."""
+    from dolfinx import fem
+    from petsc4py import PETSc
+    bcs = []
+    if args.fix_below is None and args.fix_faces is None:
+        pins = pin_points(comm, piece)
+        for g, comps, xp in pins:
+            blocks = dof_of_point[piece["gid"] == g]
+            for k in comps:
+                value = exact_displacement(args, xp)[k]
+                bcs.append(fem.dirichletbc(PETSc.ScalarType(value), (3 * blocks + k).astype(np.int32), V.sub(k)))
+        pins = [(int(g), comps) for g, comps, _ in pins]
+    else:
+        pins = None
+        fixed = consistent_blocks(V, dof_of_point[supported_points(args, piece, btri, lo, hi)])
+        if comm.allreduce(len(fixed)) == 0:
+            raise SolveError("no supported point: --fix-below/--fix-faces selected nothing")
+        for k in range(3):
+            bcs.append(fem.dirichletbc(PETSc.ScalarType(0.0), (3 * fixed + k).astype(np.int32), V.sub(k)))
+    return bcs, pins
+
+
+def exact_displacement(args, x):
+    """Uniform pressure p on a closed body: u = -p(1-2nu)/E x (+ rigid motion)."""
+    return -args.pressure * (1 - 2 * args.nu) / args.E * x
+
+
+# ---------------------------------------------------------------- the problem in UFL
+
+def elasticity_forms(args, msh, V, tags):
+    """a(u, v) = (sigma(u), eps(v)), L(v) = -p (n, v) on all boundary facets
+    + (t, v) on the loaded ones; E, nu, p, t are Constants, so the compiled
+    forms do not depend on the values (one JIT compilation, then the cache)."""
+    import ufl
+    from dolfinx import fem
+    from petsc4py import PETSc
+    E = fem.Constant(msh, PETSc.ScalarType(args.E))
+    nu = fem.Constant(msh, PETSc.ScalarType(args.nu))
+    p = fem.Constant(msh, PETSc.ScalarType(args.pressure))
+    t = fem.Constant(msh, np.asarray(args.traction, dtype=PETSc.ScalarType))
+    u, v = ufl.TrialFunction(V), ufl.TestFunction(V)
+    ds = ufl.Measure("ds", domain=msh, subdomain_data=tags)
+    n = ufl.FacetNormal(msh)
+    a = ufl.inner(stress(u, E, nu), ufl.sym(ufl.grad(v))) * ufl.dx
+    L = -p * ufl.inner(n, v) * ds((1, 2)) + ufl.inner(t, v) * ds(2)
+    return fem.form(a), fem.form(L), (E, nu)
+
+
+def stress(u, E, nu):
+    import ufl
+    mu, lmbda = E / (2 * (1 + nu)), E * nu / ((1 + nu) * (1 - 2 * nu))
+    eps = ufl.sym(ufl.grad(u))
+    return 2 * mu * eps + lmbda * ufl.tr(eps) * ufl.Identity(3)
+
+
+def von_mises(msh, u, E, nu, tet_of_cell):
+    """Per tetrahedron (P1: constant stress), interpolated by dolfinx into
+    DG0 and put in the piece's cell order."""
+    import ufl
+    from dolfinx import fem
+    s = stress(u, E, nu)
+    dev = s - ufl.tr(s) / 3 * ufl.Identity(3)
+    W = fem.FunctionSpace(msh, ("DG", 0))
+    w = fem.Function(W)
+    w.interpolate(fem.Expression(ufl.sqrt(1.5 * ufl.inner(dev, dev)), W.element.interpolation_points()))
+    vm = np.empty(len(tet_of_cell))
+    vm[tet_of_cell] = w.x.array[W.dofmap.list.array]
+    return vm
 
 
 def make_solver(args, A, x_owned):
@@ -426,7 +532,8 @@ def make_solver(args, A, x_owned):
 
 
 def rigid_modes(A, x):
-    """The six rigid motions on the owned dofs, for GAMG's coarse spaces."""
+    """The six rigid motions on the owned dofs (x: their points), for GAMG's
+    coarse spaces."""
     from petsc4py import PETSc
     modes = []
     for k in range(6):
@@ -445,67 +552,65 @@ def rigid_modes(A, x):
     return PETSc.NullSpace().create(vectors=modes, comm=A.getComm())
 
 
-def von_mises(x, tets, u, E, nu):
-    """Per tetrahedron (P1: constant strain), from the displacement gradient."""
-    d = x[tets[:, 1:]] - x[tets[:, :1]]
-    du = u[tets[:, 1:]] - u[tets[:, :1]]
-    grad = np.transpose(np.linalg.solve(d, du), (0, 2, 1))
-    eps = 0.5 * (grad + np.transpose(grad, (0, 2, 1)))
-    mu, lmbda = E / (2 * (1 + nu)), E * nu / ((1 + nu) * (1 - 2 * nu))
-    tr = np.trace(eps, axis1=1, axis2=2)
-    s = 2 * mu * eps + (lmbda * tr)[:, None, None] * np.eye(3)
-    dev = s - (np.trace(s, axis1=1, axis2=2) / 3)[:, None, None] * np.eye(3)
-    return np.sqrt(1.5 * np.einsum("kij,kij->k", dev, dev))
-
-
 # ---------------------------------------------------------------- driver
 
 def setup(args, comm, t):
-    """Reading, numbering, mesh, stiffness, loads and supports: everything
-    before the solve. Returns the state the solve and the report need."""
+    """Reading, numbering, the dolfinx mesh, forms, assembly, conditions:
+    everything before the solve. Returns the state the solve and the report
+    need."""
+    from dolfinx import fem
+    from dolfinx.fem import petsc as fem_petsc
+    from petsc4py import PETSc
     rank, size = comm.Get_rank(), comm.Get_size()
     piece = collective(comm, "reading", read_own_pieces, args.mesh, rank, size)
     t["read"] = time.perf_counter()
     new, n_owned, _, recv_bytes = contiguous_numbering(comm, piece)
     t["numbering"] = time.perf_counter()
-    gblock = new
-    A = assemble_stiffness(comm, piece, new, n_owned, args.E, args.nu)
+    vol = collective(comm, "tetrahedra", tet_volumes, piece["x"], piece["tets"])
+    msh, tet_of_cell, point_of_node = create_mesh(comm, piece, new, n_owned)
+    V = fem.VectorFunctionSpace(msh, ("Lagrange", 1))
+    dof_of_point = collective(comm, "dofs", piece_dofs, msh, V, point_of_node, len(new))
     lo, hi = global_bounds(comm, piece["x"])
     btri = collective(comm, "boundary", boundary_to_piece, piece)
-    volume = outward_check(comm, piece, btri)
-    pts, forces, area = boundary_loads(args, piece, btri, lo, hi)
-    if args.pressure == 0 and comm.allreduce(area) == 0:
+    select, area = loaded_triangles(args, piece, btri, lo, hi)
+    area = comm.allreduce(area)
+    if args.pressure == 0 and area == 0:
         raise SolveError("no load: --traction-faces/--traction-above selected no boundary triangle")
     if args.pressure == 0 and not np.any(args.traction):
         raise SolveError("no load: the traction is zero (give --traction tx,ty,tz)")
-    b = A.createVecLeft()
-    b.setValues(petsc_rows(gblock, np.repeat(pts, 3), np.tile([0, 1, 2], len(pts))),
-                forces.ravel(), addv=True)
-    b.assemblyBegin()
-    b.assemblyEnd()
-    if args.fix_below is None and args.fix_faces is None:
-        pins = pin_points(comm, piece)
-        sel = [(np.flatnonzero(piece["gid"] == g), comps) for g, comps in pins]
-        spts = np.concatenate([np.repeat(i, len(c)) for i, c in sel]).astype(np.int64)
-        scomp = np.concatenate([np.tile(c, len(i)) for i, c in sel]).astype(np.int64)
-        svals = exact_displacement(args, piece["x"][spts])[np.arange(len(spts)), scomp]
-    else:
-        pins = None
-        spts, scomp = support_points(args, comm, piece, btri, lo, hi)
-        svals = np.zeros(len(spts))
-    if comm.allreduce(len(spts)) == 0:
-        raise SolveError("no supported point: --fix-below/--fix-faces selected nothing")
-    A0, b0 = A.copy(), b.copy()
-    rows = constrain(A, b, petsc_rows(gblock, spts, scomp), svals)
+    tags = boundary_tags(comm, msh, point_of_node, btri, select)
+    bcs, pins = dirichlet_conditions(args, comm, piece, V, dof_of_point, btri, lo, hi)
+    t["mesh"] = time.perf_counter()
+    a, L, material = elasticity_forms(args, msh, V, tags)
+    t["forms"] = time.perf_counter()
+    A = fem_petsc.assemble_matrix(a, bcs=bcs)
+    A.assemble()
+    b = fem_petsc.assemble_vector(L)
+    fem_petsc.apply_lifting(b, [a], bcs=[bcs])
+    b.ghostUpdate(addv=PETSc.InsertMode.ADD, mode=PETSc.ScatterMode.REVERSE)
+    fem_petsc.set_bc(b, bcs)
+    # without conditions, for the support reaction K0 u - f
+    A0 = fem_petsc.assemble_matrix(a)
+    A0.assemble()
+    b0 = fem_petsc.assemble_vector(L)
+    b0.ghostUpdate(addv=PETSc.InsertMode.ADD, mode=PETSc.ScatterMode.REVERSE)
+    start = A.getOwnershipRange()[0]
+    rows = []
+    for bc in bcs:
+        dofs, n_owned_dofs = bc.dof_indices()
+        rows.append(np.asarray(dofs[:n_owned_dofs]) + start)
+    rows = np.unique(np.concatenate(rows)).astype(np.int64)
     t["assemble"] = time.perf_counter()
-    return dict(piece=piece, x_owned=owned_coordinates(comm, piece, new, n_owned), new=new, A=A, b=b, A0=A0, b0=b0, rows=rows, pins=pins,
-                area=comm.allreduce(area), volume=volume, recv_bytes=recv_bytes,
-                ghost_nodes=len(new) - n_owned)
-
-
-def exact_displacement(args, x):
-    """Uniform pressure p on a closed body: u = -p(1-2nu)/E x (+ rigid motion)."""
-    return -args.pressure * (1 - 2 * args.nu) / args.E * x
+    imap_c, imap_v = msh.topology.index_map(3), msh.topology.index_map(0)
+    n_dofs_owned = V.dofmap.index_map.size_local
+    return dict(piece=piece, msh=msh, V=V, material=material, tet_of_cell=tet_of_cell,
+                dof_of_point=dof_of_point, x_owned=V.tabulate_dof_coordinates()[:n_dofs_owned],
+                A=A, b=b, A0=A0, b0=b0, rows=rows, pins=pins, area=area,
+                volume=comm.allreduce(float(vol.sum())), recv_bytes=recv_bytes,
+                ghost_nodes=len(new) - n_owned,
+                dolfinx={"cells": imap_c.size_local, "ghost_cells": imap_c.num_ghosts,
+                         "owned_vertices": imap_v.size_local, "ghost_vertices": imap_v.num_ghosts,
+                         "global_vertices": imap_v.size_global})
 
 
 def forces(comm, s, u):
@@ -523,23 +628,26 @@ def forces(comm, s, u):
 
 
 def solve(args, comm):
+    import dolfinx
+    from dolfinx import fem
     t = {"start": time.perf_counter()}
     s = setup(args, comm, t)
     ksp = make_solver(args, s["A"], s["x_owned"])
-    uvec = s["A"].createVecRight()
-    ksp.solve(s["b"], uvec)
+    uh = fem.Function(s["V"])
+    ksp.solve(s["b"], uh.vector)
+    uh.x.scatter_forward()
     t["solve"] = time.perf_counter()
     res = s["b"].copy()
-    s["A"].mult(uvec, res)
+    s["A"].mult(uh.vector, res)
     res.axpy(-1.0, s["b"])
     piece = s["piece"]
-    n = len(piece["x"])
-    u = gather_piece_values(uvec, petsc_rows(s["new"], np.repeat(np.arange(n), 3), np.tile([0, 1, 2], n))).reshape(-1, 3)
-    load, reaction, magnitude = forces(comm, s, uvec)
+    u = uh.x.array.reshape(-1, 3)[s["dof_of_point"]]
+    load, reaction, magnitude = forces(comm, s, uh.vector)
     # a pressure on a closed body has no resultant: compare with the nodal forces' size
     scale = max(np.linalg.norm(load), 1e-12 * magnitude)
     out = {"ranks": comm.Get_size(), "points": comm.allreduce(int(np.sum((piece["ghost"] & 1) == 0))),
            "tetrahedra": comm.allreduce(len(piece["tets"])), "E": args.E, "nu": args.nu,
+           "engine": f"dolfinx {dolfinx.__version__}",
            "solver": args.solver, "iterations": ksp.getIterationNumber(),
            "converged_reason": ksp.getConvergedReason(),
            "relative_residual": res.norm() / max(s["b"].norm(), 1e-300),
@@ -547,7 +655,7 @@ def solve(args, comm):
            "equilibrium_error": float(np.linalg.norm(load + reaction) / scale),
            "self_equilibrated_load": bool(np.linalg.norm(load) < 1e-12 * magnitude),
            "loaded_area": s["area"], "volume": s["volume"], "pins": s["pins"]}
-    vm = von_mises(piece["x"], piece["tets"], u, args.E, args.nu)
+    vm = von_mises(s["msh"], uh, *s["material"], s["tet_of_cell"])
     if args.pressure != 0 and s["pins"] is not None:
         ex = exact_displacement(args, piece["x"])
         err = comm.allreduce(float(np.max(np.abs(u - ex), initial=0.0)), op=MPI.MAX)
@@ -563,14 +671,14 @@ def solve(args, comm):
 
 
 def rank_report(piece, s, t):
-    phases = ["read", "numbering", "assemble", "solve", "post"]
+    phases = ["read", "numbering", "mesh", "forms", "assemble", "solve", "post"]
     prev, sec = t["start"], {}
     for p in phases:
         sec[p] = round(t[p] - prev, 4)
         prev = t[p]
     return {"file_bytes_read": piece["file_bytes"], "numbering_bytes_received": s["recv_bytes"],
             "tetrahedra": len(piece["tets"]), "points": len(piece["x"]),
-            "copies_of_other_ranks_points": s["ghost_nodes"],
+            "copies_of_other_ranks_points": s["ghost_nodes"], "dolfinx": s["dolfinx"],
             "meshing_seconds": piece["meshing_seconds"], "seconds": sec,
             "solver_seconds_total": round(t["post"] - t["start"], 4)}
 
@@ -612,6 +720,10 @@ def print_summary(out):
               f"max von Mises / p = {out['max_von_mises_over_p']:.2e}")
     print(f"solve: max |u| = {out['max_displacement']:.6e}, max von Mises = {out['max_von_mises']:.6e}")
     for r, pr in enumerate(out["per_rank"]):
+        d = pr["dolfinx"]
+        print(f"solve: rank {r}: {pr['tetrahedra']} tetrahedra in the piece, {d['cells']} cells in "
+              f"{out['engine']} ({d['ghost_cells']} ghost cells), vertices {d['owned_vertices']} owned + "
+              f"{d['ghost_vertices']} ghosts of {d['global_vertices']}")
         print(f"solve: rank {r}: read {pr['file_bytes_read']} B from files, "
               f"{pr['numbering_bytes_received']} B from the numbering exchange; meshing "
               f"{pr['meshing_seconds']:.2f} s, solver {pr['solver_seconds_total']:.2f} s {pr['seconds']}")
@@ -630,6 +742,9 @@ def release_petsc(comm):
 
 def main(argv=None):
     args = parse_args(sys.argv[1:] if argv is None else argv)
+    import logging
+    # dolfinx's JIT (cffi, setuptools) logs every compiler call at INFO on the root logger
+    logging.getLogger().addFilter(lambda record: record.levelno >= logging.WARNING)
     comm = MPI.COMM_WORLD
     try:
         out = solve(args, comm)

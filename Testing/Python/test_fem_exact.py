@@ -6,6 +6,8 @@ tetrahedra reproduce it exactly. For the ball and the bracket: mesh with RANKS
 ranks into more subdomains than ranks, solve on the same ranks, then check
 independently of the solver, from the written .pvtu pieces, that
   - every rank's solution piece holds exactly the mesher's tetrahedra (no repartitioning),
+    and the solver reports that dolfinx's mesh has exactly those cells on that rank
+    and shares the points between ranks (ghost vertices = the pieces' copies),
   - max|u - u_exact| / max|u_exact| <= 1e-8,
   - the check can fail: a solve with E 1% off is 1e-2 away from the exact field.
 With RANKS = 2 it also checks that solving a 2-piece mesh on 1 rank fails with
@@ -70,6 +72,29 @@ def same_tetrahedra(mesh_file, solution):
             raise SystemExit(f"FAILED: {s} does not hold exactly the tetrahedra of {m}")
 
 
+def engine_kept_pieces(name, summary):
+    """The solver's own report of dolfinx's mesh: every rank's cells are its
+    piece's tetrahedra (none moved, no ghost cells), the shared points are
+    shared vertices (the global vertex count is the mesh's point count, and
+    the ghost vertices are as many as the pieces' copies of other ranks'
+    points)."""
+    ranks = summary["per_rank"]
+    for r, pr in enumerate(ranks):
+        d = pr["dolfinx"]
+        if d["cells"] != pr["tetrahedra"] or d["ghost_cells"] != 0:
+            raise SystemExit(f"FAILED: {name}: rank {r} has {d['cells']} cells (+{d['ghost_cells']} "
+                             f"ghosts) in dolfinx, {pr['tetrahedra']} tetrahedra in its piece")
+        if d["global_vertices"] != summary["points"]:
+            raise SystemExit(f"FAILED: {name}: dolfinx has {d['global_vertices']} vertices, "
+                             f"the mesh {summary['points']} points")
+    ghosts = sum(pr["dolfinx"]["ghost_vertices"] for pr in ranks)
+    copies = sum(pr["copies_of_other_ranks_points"] for pr in ranks)
+    if ghosts != copies or (len(ranks) > 1 and ghosts == 0):
+        raise SystemExit(f"FAILED: {name}: {ghosts} ghost vertices in dolfinx, {copies} shared copies in the pieces")
+    print(f"{name}: {summary['engine']} kept the cells per rank {[pr['tetrahedra'] for pr in ranks]}, "
+          f"ghost vertices {[pr['dolfinx']['ghost_vertices'] for pr in ranks]}")
+
+
 def check_surface(ranks, plugin, surface, out, size, wrong_E):
     name = os.path.splitext(os.path.basename(surface))[0]
     mesh_file = os.path.join(out, f"{name}.pvtu")
@@ -80,6 +105,7 @@ def check_surface(ranks, plugin, surface, out, size, wrong_E):
     err = exact_error(solution, 1.0)
     err_wrong_formula = exact_error(solution, 1.01)
     summary = json.load(open(solution[:-5] + ".json"))
+    engine_kept_pieces(name, summary)
     print(f"{name} on {ranks} ranks: exact error {err:.3e} (solver says "
           f"{summary['exact_relative_error']:.3e}); against E = 1.01: {err_wrong_formula:.3e}")
     if not err <= TOL:
