@@ -1,5 +1,7 @@
 #include "RankCollectives.h"
 
+#include "PhaseLog.h"
+
 #include "vtkAlgorithm.h"
 #include "vtkCommunicator.h"
 #include "vtkMultiProcessController.h"
@@ -21,6 +23,7 @@ template <typename T>
 std::vector<T> gather(vtkMultiProcessController* c, const std::vector<T>& local,
   std::vector<long long>* countsOut)
 {
+  phases::collective(c, "allgather", local.size() * sizeof(T));
   if (!parallel(c))
   {
     if (countsOut)
@@ -85,6 +88,7 @@ bool sameOnEveryRank(vtkMultiProcessController* c, const std::vector<long long>&
 template <typename T>
 void allReduce(vtkMultiProcessController* c, std::vector<T>& values, int operation)
 {
+  phases::collective(c, "allreduce", values.size() * sizeof(T));
   if (!parallel(c) || values.empty())
   {
     return;
@@ -109,6 +113,7 @@ bool agreeAllSucceeded(vtkMultiProcessController* c, bool localOk, const std::st
   std::string& message)
 {
   message.clear();
+  phases::collective(c, "agree", sizeof(int));
   if (!parallel(c))
   {
     message = localOk ? "" : localError;
@@ -168,6 +173,7 @@ bool agreeAnyAborted(vtkMultiProcessController* c, vtkAlgorithm* algorithm)
   {
     algorithm->SetAbortExecute(0); // honoured now; the next update runs normally
   }
+  phases::collective(c, "abort", sizeof(int));
   if (!parallel(c))
   {
     return localAbort;

@@ -1,6 +1,7 @@
 #include "vtkInterfaceTriangulator.h"
 
 #include "InterfaceTriangulation.h"
+#include "PhaseLog.h"
 #include "PipelineRequests.h"
 #include "PolyDataConversion.h"
 #include "PropertyChecks.h"
@@ -172,6 +173,7 @@ int vtkInterfaceTriangulator::RequestData(
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkMultiProcessController* controller = this->Controller;
+  ptm::phases::setPhase(controller, "interface"); // PhaseLog.h
   std::string message;
 
   this->UpdateProgress(0.0);

@@ -2,6 +2,7 @@
 
 #include "CADFaceIds.h"
 #include "GlobalMeshNumbering.h"
+#include "PhaseLog.h"
 #include "PipelineRequests.h"
 #include "PolyDataConversion.h"
 #include "PropertyChecks.h"
@@ -522,6 +523,7 @@ int vtkParallelTetMesher::RequestData(
   vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
   vtkPolyData* boundary = vtkPolyData::GetData(outputVector, 1);
   vtkMultiProcessController* controller = this->Controller;
+  ptm::phases::setPhase(controller, "volume meshing"); // PhaseLog.h; the last phase is "end": writing
   const int rank = ptm::rankOf(controller);
   std::string message, localError;
   auto fail = [&](const std::string& text) {
@@ -656,6 +658,7 @@ int vtkParallelTetMesher::RequestData(
   }
 
   this->SetProgressText("Numbering");
+  ptm::phases::setPhase(controller, "numbering and assembly");
   const MeshTotals totals = gatherTotals(controller, piece, owned);
   const std::vector<long long> lowest = lowestSubdomainOfPoints(controller, piece, owned);
   this->SetProgressText("Assembling");

@@ -1,6 +1,7 @@
 #include "vtkSurfaceRelaxer.h"
 
 #include "ComplexGather.h"
+#include "PhaseLog.h"
 #include "PipelineRequests.h"
 #include "PolyDataConversion.h"
 #include "PropertyChecks.h"
@@ -77,6 +78,7 @@ int vtkSurfaceRelaxer::RequestData(
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkMultiProcessController* controller = this->Controller;
+  ptm::phases::setPhase(controller, "relax"); // PhaseLog.h
   const int rank = ptm::rankOf(controller);
   std::string message, localError;
   // Every rank takes the same branch: a failure anywhere fails all, an abort

@@ -1,6 +1,7 @@
 #include "vtkVolumeBalancedCutter.h"
 
 #include "CADFaceIds.h"
+#include "PhaseLog.h"
 #include "PipelineRequests.h"
 #include "PolyDataConversion.h"
 #include "PropertyChecks.h"
@@ -214,6 +215,7 @@ int vtkVolumeBalancedCutter::RequestData(
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkMultiProcessController* controller = this->Controller;
+  ptm::phases::setPhase(controller, "cut"); // PhaseLog.h
   const int rank = ptm::rankOf(controller);
   const int ranks = ptm::rankCount(controller);
   std::string message;
