@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <map>
 #include <set>
@@ -795,30 +794,24 @@ bool PartCut::run(const Vec3& proposedNormal, std::string& error)
   result.splitStats.crossingsWithin1Percent += best.stats.crossingsWithin1Percent;
   return true;
 }
-} // namespace
 
-DecompositionResult decomposeVolumeBalanced(
-  const TriangleSurface& input, const DecompositionOptions& options)
+// The complex of the whole checked surface, all of it part 0; false (with
+// the input check's error in result) if the check refused the surface.
+bool startComplex(const TriangleSurface& input, const DecompositionOptions& options, DecompositionResult& result,
+  double& totalVolume)
 {
-  DecompositionResult result;
-  const int K = options.numberOfSubdomains;
-  result.error = optionError(options);
-  if (!result.error.empty())
-  {
-    return result;
-  }
   PreparedSurface prepared = prepareInputSurface(input, options.inputCheck);
   result.inputCheck = prepared.counts;
   result.warnings = prepared.warnings;
   if (!prepared.ok)
   {
     result.error = prepared.error;
-    return result;
+    return false;
   }
   result.orientation = prepared.orientation;
   const TriangleSurface& surface = prepared.surface;
   const std::vector<Index>& source = prepared.sourceOfTriangle;
-  const double totalVolume = prepared.enclosedVolume;
+  totalVolume = prepared.enclosedVolume;
   result.totalVolume = totalVolume;
   result.inputMeanEdgeLength = meanEdgeLength(surface);
 
@@ -827,69 +820,77 @@ DecompositionResult decomposeVolumeBalanced(
   c.triangles = surface.triangles;
   c.trianglePairs.assign(c.triangles.size(), SubdomainPair{ 0, -1 });
   c.sourceFaces = source;
+  return true;
+}
 
-  const double solveTolerance = std::min(1e-6, 0.01 * options.balanceTolerance);
+// The cuts of the decomposition. Parts are numbered as they are made (the
+// whole object is part 0, every cut makes two new ones); leaves lists the
+// final parts in subdomain order.
+struct Cutting
+{
+  SurfaceComplex& c;
+  const DecompositionOptions& options;
+  DecompositionResult& result;
+  const double solveTolerance;
   int nextCell = 1;
-  std::vector<int> leaves; // cell ids in subdomain order
-  std::string error;
+  std::vector<int> leaves{}; // cell ids in subdomain order
+  std::string error{};
 
-  auto cut = [&](int cell, const Vec3& proposedNormal, double fraction, int parts, int& below,
-               int& above) -> bool {
-    below = nextCell++;
-    above = nextCell++;
-    PartCut part(c, options, result, cell, fraction, parts, below, above, solveTolerance);
-    return part.run(proposedNormal, error);
-  };
+  bool cut(int cell, const Vec3& proposedNormal, double fraction, int parts, int& below, int& above);
+  bool parallelPlanes(int K);
+  bool bisect(int cell, int k);
+};
 
-  if (K > 1 && options.strategy == CutStrategy::ParallelPlanes)
+bool Cutting::cut(int cell, const Vec3& proposedNormal, double fraction, int parts, int& below, int& above)
+{
+  below = nextCell++;
+  above = nextCell++;
+  PartCut part(c, options, result, cell, fraction, parts, below, above, solveTolerance);
+  return part.run(proposedNormal, error);
+}
+
+// One direction for all planes; each plane cuts the rest of the object so
+// that the slab below gets 1/(number of subdomains still to make) of it.
+bool Cutting::parallelPlanes(int K)
+{
+  const Vec3 normal = cutNormal(c.points, cellPoints(c, 0), options.direction);
+  int rest = 0;
+  for (int i = 0; i < K - 1; ++i)
   {
-    // one direction for all planes; each plane cuts the rest of the object so
-    // that the slab below gets 1/(number of subdomains still to make) of it
-    const Vec3 normal = cutNormal(c.points, cellPoints(c, 0), options.direction);
-    int rest = 0;
-    for (int i = 0; i < K - 1; ++i)
+    int below = 0, above = 0;
+    if (!cut(rest, normal, 1.0 / (K - i), K - i, below, above))
     {
-      int below = 0, above = 0;
-      if (!cut(rest, normal, 1.0 / (K - i), K - i, below, above))
-      {
-        result.error = error;
-        return result;
-      }
-      leaves.push_back(below);
-      rest = above;
+      return false;
     }
-    leaves.push_back(rest);
+    leaves.push_back(below);
+    rest = above;
   }
-  else if (K > 1)
-  {
-    std::function<bool(int, int)> bisect = [&](int cell, int k) -> bool {
-      if (k == 1)
-      {
-        leaves.push_back(cell);
-        return true;
-      }
-      const Vec3 normal = cutNormal(c.points, cellPoints(c, cell), options.direction);
-      const int lowerCount = k / 2;
-      int below = 0, above = 0;
-      if (!cut(cell, normal, static_cast<double>(lowerCount) / k, k, below, above))
-      {
-        return false;
-      }
-      return bisect(below, lowerCount) && bisect(above, k - lowerCount);
-    };
-    if (!bisect(0, K))
-    {
-      result.error = error;
-      return result;
-    }
-  }
-  else
-  {
-    leaves.push_back(0);
-  }
+  leaves.push_back(rest);
+  return true;
+}
 
-  // Renumber parts to subdomains 0..K-1.
-  std::vector<int> subdomainOfCell(nextCell, -1);
+// Cuts part `cell` into k subdomains: its lower half k / 2, its upper half the rest.
+bool Cutting::bisect(int cell, int k)
+{
+  if (k == 1)
+  {
+    leaves.push_back(cell);
+    return true;
+  }
+  const Vec3 normal = cutNormal(c.points, cellPoints(c, cell), options.direction);
+  const int lowerCount = k / 2;
+  int below = 0, above = 0;
+  if (!cut(cell, normal, static_cast<double>(lowerCount) / k, k, below, above))
+  {
+    return false;
+  }
+  return bisect(below, lowerCount) && bisect(above, k - lowerCount);
+}
+
+// Renumbers the parts to subdomains 0..K-1.
+void renumberParts(SurfaceComplex& c, const std::vector<int>& leaves, int cellCount, int K)
+{
+  std::vector<int> subdomainOfCell(cellCount, -1);
   for (int s = 0; s < K; ++s)
   {
     subdomainOfCell[leaves[s]] = s;
@@ -905,8 +906,12 @@ DecompositionResult decomposeVolumeBalanced(
     std::sort(region.edges.begin(), region.edges.end());
   }
   c.subdomainCount = K;
-  // The contract of the complex: every interface is bounded by closed loops
-  // (splitCell checks each piece; this guards the whole result).
+}
+
+// The contract of the complex: every interface is bounded by closed loops
+// (splitCell checks each piece; this guards the whole result).
+std::string openInterfaceError(const SurfaceComplex& c)
+{
   for (const InterfaceRegion& region : c.interfaces)
   {
     std::vector<std::vector<Index>> loops;
@@ -915,11 +920,19 @@ DecompositionResult decomposeVolumeBalanced(
       std::ostringstream msg;
       msg << "internal: the interface between subdomains " << region.pair[0] << " and "
           << region.pair[1] << " on plane " << region.planeId << " is not bounded by closed loops";
-      result.error = msg.str();
-      return result;
+      return msg.str();
     }
   }
+  return {};
+}
 
+// The volume and measure of every subdomain and the worst imbalance; the
+// error if the volumes do not add up to the input's or a subdomain
+// encloses none.
+std::string measureBalance(
+  const SurfaceComplex& c, const DecompositionOptions& options, double totalVolume, DecompositionResult& result)
+{
+  const int K = options.numberOfSubdomains;
   result.subdomainVolume = subdomainVolumes(c);
   double enclosed = 0;
   for (double v : result.subdomainVolume)
@@ -932,8 +945,7 @@ DecompositionResult decomposeVolumeBalanced(
     msg.precision(9);
     msg << "internal: the subdomains enclose " << enclosed << " in all, the input " << totalVolume
         << " (the cuts overlap); try another number of subdomains or strategy, or SnapFraction 0";
-    result.error = msg.str();
-    return result;
+    return msg.str();
   }
   result.subdomainMeasure =
     measureSubdomains(c, options.criterion, result.subdomainVolume);
@@ -951,9 +963,59 @@ DecompositionResult decomposeVolumeBalanced(
     {
       std::ostringstream msg;
       msg << "subdomain " << s << " encloses no volume";
-      result.error = msg.str();
+      return msg.str();
+    }
+  }
+  return {};
+}
+} // namespace
+
+DecompositionResult decomposeVolumeBalanced(
+  const TriangleSurface& input, const DecompositionOptions& options)
+{
+  DecompositionResult result;
+  const int K = options.numberOfSubdomains;
+  result.error = optionError(options);
+  if (!result.error.empty())
+  {
+    return result;
+  }
+  double totalVolume = 0;
+  if (!startComplex(input, options, result, totalVolume))
+  {
+    return result;
+  }
+  SurfaceComplex& c = result.complex;
+  Cutting cutting{ c, options, result, std::min(1e-6, 0.01 * options.balanceTolerance) };
+  if (K > 1 && options.strategy == CutStrategy::ParallelPlanes)
+  {
+    if (!cutting.parallelPlanes(K))
+    {
+      result.error = cutting.error;
       return result;
     }
+  }
+  else if (K > 1)
+  {
+    if (!cutting.bisect(0, K))
+    {
+      result.error = cutting.error;
+      return result;
+    }
+  }
+  else
+  {
+    cutting.leaves.push_back(0);
+  }
+  renumberParts(c, cutting.leaves, cutting.nextCell, K);
+  result.error = openInterfaceError(c);
+  if (result.error.empty())
+  {
+    result.error = measureBalance(c, options, totalVolume, result);
+  }
+  if (!result.error.empty())
+  {
+    return result;
   }
   if (result.maximumImbalance > options.balanceTolerance)
   {
