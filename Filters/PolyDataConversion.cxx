@@ -90,7 +90,24 @@ TriangleSurface triangleSurfaceFromPolyData(vtkPolyData* input)
   return s;
 }
 
-void complexToPolyData(const ComplexPiece& piece, const std::vector<int>& keep, vtkPolyData* output)
+namespace
+{
+// The points and cells of the faces of a piece that are written, with the
+// values of each kind of cell kept apart until all are made (VTK orders
+// cell data: vertices, lines, polygons, strips).
+struct ComplexCells
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkIdTypeArray> globalIds;
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkCellArray> lines;
+  vtkNew<vtkIntArray> polyPairs, linePairs, polyPlanes, linePlanes;
+  vtkNew<vtkIdTypeArray> polySources, lineSources;
+};
+
+// The triangles, and the interface regions as closed poly-lines, whose pair
+// contains a subdomain in `keep` (all if keep is empty).
+void collectCells(const ComplexPiece& piece, const std::vector<int>& keep, ComplexCells& cells)
 {
   const SurfaceComplex& c = piece.complex;
   std::vector<char> kept(static_cast<std::size_t>(std::max(c.subdomainCount, 1)), keep.empty());
@@ -106,25 +123,19 @@ void complexToPolyData(const ComplexPiece& piece, const std::vector<int>& keep, 
   };
 
   std::vector<vtkIdType> local(c.points.size(), -1);
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkIdTypeArray> globalIds;
-  globalIds->SetName(arrays::GlobalPointIds);
+  cells.points->SetDataTypeToDouble();
+  cells.globalIds->SetName(arrays::GlobalPointIds);
   auto use = [&](Index p) {
     if (local[p] < 0)
     {
-      local[p] = points->InsertNextPoint(c.points[p].data());
-      globalIds->InsertNextValue(piece.globalIds.empty() ? p : piece.globalIds[p]);
+      local[p] = cells.points->InsertNextPoint(c.points[p].data());
+      cells.globalIds->InsertNextValue(piece.globalIds.empty() ? p : piece.globalIds[p]);
     }
     return local[p];
   };
 
-  vtkNew<vtkCellArray> polys;
-  vtkNew<vtkCellArray> lines;
-  vtkNew<vtkIntArray> polyPairs, linePairs, polyPlanes, linePlanes;
-  vtkNew<vtkIdTypeArray> polySources, lineSources;
-  polyPairs->SetNumberOfComponents(2);
-  linePairs->SetNumberOfComponents(2);
+  cells.polyPairs->SetNumberOfComponents(2);
+  cells.linePairs->SetNumberOfComponents(2);
   for (std::size_t i = 0; i < c.triangles.size(); ++i)
   {
     if (!wanted(c.trianglePairs[i]))
@@ -132,10 +143,10 @@ void complexToPolyData(const ComplexPiece& piece, const std::vector<int>& keep, 
       continue;
     }
     const vtkIdType ids[3] = { use(c.triangles[i][0]), use(c.triangles[i][1]), use(c.triangles[i][2]) };
-    polys->InsertNextCell(3, ids);
-    polyPairs->InsertNextTypedTuple(c.trianglePairs[i].data());
-    polySources->InsertNextValue(c.sourceFaces.empty() ? -1 : c.sourceFaces[i]);
-    polyPlanes->InsertNextValue(c.trianglePlanes.empty() ? -1 : c.trianglePlanes[i]);
+    cells.polys->InsertNextCell(3, ids);
+    cells.polyPairs->InsertNextTypedTuple(c.trianglePairs[i].data());
+    cells.polySources->InsertNextValue(c.sourceFaces.empty() ? -1 : c.sourceFaces[i]);
+    cells.polyPlanes->InsertNextValue(c.trianglePlanes.empty() ? -1 : c.trianglePlanes[i]);
   }
   for (const auto& region : c.interfaces)
   {
@@ -153,19 +164,17 @@ void complexToPolyData(const ComplexPiece& piece, const std::vector<int>& keep, 
         ids->InsertNextId(use(p));
       }
       ids->InsertNextId(use(loop.front()));
-      lines->InsertNextCell(ids);
-      linePairs->InsertNextTypedTuple(region.pair.data());
-      linePlanes->InsertNextValue(region.planeId);
-      lineSources->InsertNextValue(-1);
+      cells.lines->InsertNextCell(ids);
+      cells.linePairs->InsertNextTypedTuple(region.pair.data());
+      cells.linePlanes->InsertNextValue(region.planeId);
+      cells.lineSources->InsertNextValue(-1);
     }
   }
-  output->Initialize();
-  output->SetPoints(points);
-  output->SetPolys(polys);
-  output->SetLines(lines);
-  output->GetPointData()->SetGlobalIds(globalIds);
+}
 
-  // VTK orders cell data: vertices, lines, polygons, strips.
+// The cell arrays, lines first: VTK orders cell data: vertices, lines, polygons, strips.
+void addCellData(const ComplexCells& cells, vtkPolyData* output)
+{
   vtkNew<vtkIntArray> pairs;
   pairs->SetName(arrays::SubdomainPair);
   pairs->SetNumberOfComponents(2);
@@ -175,24 +184,30 @@ void complexToPolyData(const ComplexPiece& piece, const std::vector<int>& keep, 
   sources->SetName(arrays::SourceFaceId);
   vtkNew<vtkIntArray> planes;
   planes->SetName(arrays::PlaneId);
-  for (vtkIdType i = 0; i < lines->GetNumberOfCells(); ++i)
+  for (vtkIdType i = 0; i < cells.lines->GetNumberOfCells(); ++i)
   {
-    pairs->InsertNextTypedTuple(linePairs->GetPointer(2 * i));
-    sources->InsertNextValue(lineSources->GetValue(i));
-    planes->InsertNextValue(linePlanes->GetValue(i));
+    pairs->InsertNextTypedTuple(cells.linePairs->GetPointer(2 * i));
+    sources->InsertNextValue(cells.lineSources->GetValue(i));
+    planes->InsertNextValue(cells.linePlanes->GetValue(i));
   }
-  for (vtkIdType i = 0; i < polys->GetNumberOfCells(); ++i)
+  for (vtkIdType i = 0; i < cells.polys->GetNumberOfCells(); ++i)
   {
-    pairs->InsertNextTypedTuple(polyPairs->GetPointer(2 * i));
-    sources->InsertNextValue(polySources->GetValue(i));
-    planes->InsertNextValue(polyPlanes->GetValue(i));
+    pairs->InsertNextTypedTuple(cells.polyPairs->GetPointer(2 * i));
+    sources->InsertNextValue(cells.polySources->GetValue(i));
+    planes->InsertNextValue(cells.polyPlanes->GetValue(i));
   }
   output->GetCellData()->AddArray(pairs);
   output->GetCellData()->AddArray(sources);
   output->GetCellData()->AddArray(planes);
   output->GetCellData()->SetActiveScalars(arrays::SubdomainPair);
+}
 
-  vtkFieldData* fd = output->GetFieldData();
+// The piece's facts as field data: the cutting planes, the subdomains'
+// count, ranks, volumes and measures, the global point count and the
+// input's mean edge length.
+void addFieldData(const ComplexPiece& piece, vtkFieldData* fd)
+{
+  const SurfaceComplex& c = piece.complex;
   vtkNew<vtkDoubleArray> planeArray;
   planeArray->SetName(arrays::CuttingPlanes);
   planeArray->SetNumberOfComponents(6);
@@ -242,6 +257,20 @@ void complexToPolyData(const ComplexPiece& piece, const std::vector<int>& keep, 
   meanEdge->SetName(arrays::InputMeanEdgeLength);
   meanEdge->InsertNextValue(piece.inputMeanEdgeLength);
   fd->AddArray(meanEdge);
+}
+} // namespace
+
+void complexToPolyData(const ComplexPiece& piece, const std::vector<int>& keep, vtkPolyData* output)
+{
+  ComplexCells cells;
+  collectCells(piece, keep, cells);
+  output->Initialize();
+  output->SetPoints(cells.points);
+  output->SetPolys(cells.polys);
+  output->SetLines(cells.lines);
+  output->GetPointData()->SetGlobalIds(cells.globalIds);
+  addCellData(cells, output);
+  addFieldData(piece, output->GetFieldData());
 }
 
 bool complexFromPolyData(vtkPolyData* input, ComplexPiece& piece, std::string& error)

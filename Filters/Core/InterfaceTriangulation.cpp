@@ -108,156 +108,187 @@ std::pair<double, double> starShortfallAt(
 // one subdomain; at 2048 every corpus mesh is as without a cap.
 constexpr int kMovesPerStep = 2048;
 
+// The new vertices of the region's triangles under the angle bound, in index order.
+std::map<Index, Vertex> movableVertices(const CDT& cdt, Index boundaryCount, double bound)
+{
+  std::map<Index, Vertex> movable;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+  {
+    if (f->info().inside && faceAngle(f) < bound)
+    {
+      for (int i = 0; i < 3; ++i)
+      {
+        if (f->vertex(i)->info().index >= boundaryCount)
+        {
+          movable[f->vertex(i)->info().index] = f->vertex(i);
+        }
+      }
+    }
+  }
+  return movable;
+}
+
+// Moves v where its star falls least short of the angle bound, among the
+// centroid of its neighbours and the points a pattern search reaches;
+// whether it moved.
+bool moveToBetterPoint(CDT& cdt, Vertex v, Index boundaryCount, double bound, double sizeFactor)
+{
+  const Point start = v->point();
+  auto best = starShortfallAt(cdt, v, start, boundaryCount, bound, sizeFactor);
+  Point bestPoint = start;
+  // A move may lower the sum of the deficits only if it does not make the
+  // star's worst triangle worse (below the bound): otherwise it would
+  // trade several poor triangles for one sliver, such as a point pushed
+  // almost onto a boundary segment.
+  const double worstFloor = std::min(-best.second, bound);
+  auto better = [&](const std::pair<double, double>& candidate) {
+    return -candidate.second >= worstFloor && candidate < best;
+  };
+  // candidates: the centroid of the neighbours, then a pattern search
+  double cx = 0, cy = 0, shortest = std::numeric_limits<double>::infinity();
+  int count = 0;
+  auto w = cdt.incident_vertices(v), done = w;
+  do
+  {
+    cx += w->point().x();
+    cy += w->point().y();
+    shortest = std::min(shortest, std::sqrt(CGAL::squared_distance(start, w->point())));
+    ++count;
+  } while (++w != done);
+  const Point centroid(cx / count, cy / count);
+  const auto atCentroid = starShortfallAt(cdt, v, centroid, boundaryCount, bound, sizeFactor);
+  if (better(atCentroid))
+  {
+    best = atCentroid;
+    bestPoint = centroid;
+  }
+  for (double step = 0.25 * shortest; step > 0.01 * shortest; step *= 0.5)
+  {
+    bool improved = true;
+    for (int moves = 0; improved && moves < kMovesPerStep; ++moves)
+    {
+      improved = false;
+      for (int d = 0; d < 8; ++d)
+      {
+        const double a = d * kPi / 4;
+        const Point q(bestPoint.x() + step * std::cos(a), bestPoint.y() + step * std::sin(a));
+        const auto shortfall = starShortfallAt(cdt, v, q, boundaryCount, bound, sizeFactor);
+        if (better(shortfall))
+        {
+          best = shortfall;
+          bestPoint = q;
+          improved = true;
+        }
+      }
+    }
+  }
+  if (bestPoint != start)
+  {
+    v->set_point(bestPoint);
+    return true;
+  }
+  return false;
+}
+
+// The unconstrained edges between two faces of the region, by their sorted
+// end indices, each with a face and the index of the vertex opposite it.
+std::map<std::pair<Index, Index>, std::pair<Face, int>> innerEdges(const CDT& cdt)
+{
+  std::map<std::pair<Index, Index>, std::pair<Face, int>> edges;
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+  {
+    if (!f->info().inside)
+    {
+      continue;
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+      const Face g = f->neighbor(i);
+      if (f->is_constrained(i) || cdt.is_infinite(g) || !g->info().inside)
+      {
+        continue;
+      }
+      const Index a = f->vertex(CDT::ccw(i))->info().index, b = f->vertex(CDT::cw(i))->info().index;
+      edges.insert({ { std::min(a, b), std::max(a, b) }, { f, i } });
+    }
+  }
+  return edges;
+}
+
+// One round of flips that raise the smaller angle of the two triangles of
+// an edge; whether any edge flipped.
+bool flipRound(CDT& cdt, Index boundaryCount, double bound, double sizeFactor)
+{
+  bool flipped = false;
+  for (const auto& [key, edge] : innerEdges(cdt))
+  {
+    Face f = edge.first;
+    const int i = edge.second;
+    // the edge may have been flipped away already
+    const Index a = f->vertex(CDT::ccw(i))->info().index, b = f->vertex(CDT::cw(i))->info().index;
+    if (std::make_pair(std::min(a, b), std::max(a, b)) != key || f->is_constrained(i))
+    {
+      continue;
+    }
+    const Face g = f->neighbor(i);
+    const Point& p = f->vertex(i)->point();
+    const Point& q = g->vertex(g->index(f))->point();
+    const Point& u = f->vertex(CDT::ccw(i))->point();
+    const Point& t = f->vertex(CDT::cw(i))->point();
+    if (CGAL::orientation(p, u, q) != CGAL::LEFT_TURN || CGAL::orientation(p, q, t) != CGAL::LEFT_TURN)
+    {
+      continue; // not a convex quadrilateral
+    }
+    // nor a new diagonal longer than the old one and than the size allows
+    const double diagonal = std::sqrt(CGAL::squared_distance(p, q));
+    const double allowed = sizeFactor * (f->vertex(i)->info().size + g->vertex(g->index(f))->info().size) / 2;
+    if (diagonal > allowed && diagonal * diagonal > CGAL::squared_distance(u, t))
+    {
+      continue;
+    }
+    // the same measure as for moves: the deficits, then the smaller angle
+    auto shortfall = [&](double x, double y) {
+      return std::make_pair(std::max(0.0, bound - x) + std::max(0.0, bound - y), -std::min(x, y));
+    };
+    const auto now = shortfall(minimumAngle(p, u, t), minimumAngle(q, t, u));
+    const auto then = shortfall(minimumAngle(p, u, q), minimumAngle(p, q, t));
+    // and, like a move, never at the price of a worse smallest angle, nor
+    // making a triangle without a boundary point poor
+    const bool noWorse = -then.second >= std::min(-now.second, bound);
+    const Index ip = f->vertex(i)->info().index, iq = g->vertex(g->index(f))->info().index;
+    auto poorInside = [&](Index x, Index y, Index z, double angle) {
+      return angle < bound && x >= boundaryCount && y >= boundaryCount && z >= boundaryCount;
+    };
+    const bool keepsInsideGood = !poorInside(ip, a, iq, minimumAngle(p, u, q)) &&
+      !poorInside(ip, iq, b, minimumAngle(p, q, t));
+    if (noWorse && keepsInsideGood &&
+      (then.first < now.first - 1e-12 || (then.first <= now.first && then.second < now.second - 1e-12)))
+    {
+      cdt.flip(f, i);
+      flipped = true;
+    }
+  }
+  return flipped;
+}
+
 void smoothBadTriangles(CDT& cdt, std::size_t boundaryCount, double bound, double sizeFactor)
 {
+  const Index boundary = static_cast<Index>(boundaryCount);
   const int sweeps = 20;
   for (int sweep = 0; sweep < sweeps; ++sweep)
   {
-    // new vertices of bad triangles, in index order
-    std::map<Index, Vertex> movable;
-    for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
-    {
-      if (f->info().inside && faceAngle(f) < bound)
-      {
-        for (int i = 0; i < 3; ++i)
-        {
-          if (f->vertex(i)->info().index >= static_cast<Index>(boundaryCount))
-          {
-            movable[f->vertex(i)->info().index] = f->vertex(i);
-          }
-        }
-      }
-    }
     bool moved = false;
-    for (const auto& [index, v] : movable)
+    for (const auto& [index, v] : movableVertices(cdt, boundary, bound))
     {
-      const Point start = v->point();
-      auto best = starShortfallAt(cdt, v, start, static_cast<Index>(boundaryCount), bound, sizeFactor);
-      Point bestPoint = start;
-      // A move may lower the sum of the deficits only if it does not make the
-      // star's worst triangle worse (below the bound): otherwise it would
-      // trade several poor triangles for one sliver, such as a point pushed
-      // almost onto a boundary segment.
-      const double worstFloor = std::min(-best.second, bound);
-      auto better = [&](const std::pair<double, double>& candidate) {
-        return -candidate.second >= worstFloor && candidate < best;
-      };
-      // candidates: the centroid of the neighbours, then a pattern search
-      double cx = 0, cy = 0, shortest = std::numeric_limits<double>::infinity();
-      int count = 0;
-      auto w = cdt.incident_vertices(v), done = w;
-      do
+      if (moveToBetterPoint(cdt, v, boundary, bound, sizeFactor))
       {
-        cx += w->point().x();
-        cy += w->point().y();
-        shortest = std::min(shortest, std::sqrt(CGAL::squared_distance(start, w->point())));
-        ++count;
-      } while (++w != done);
-      const Point centroid(cx / count, cy / count);
-      const auto atCentroid = starShortfallAt(cdt, v, centroid, static_cast<Index>(boundaryCount), bound, sizeFactor);
-      if (better(atCentroid))
-      {
-        best = atCentroid;
-        bestPoint = centroid;
-      }
-      for (double step = 0.25 * shortest; step > 0.01 * shortest; step *= 0.5)
-      {
-        bool improved = true;
-        for (int moves = 0; improved && moves < kMovesPerStep; ++moves)
-        {
-          improved = false;
-          for (int d = 0; d < 8; ++d)
-          {
-            const double a = d * kPi / 4;
-            const Point q(bestPoint.x() + step * std::cos(a), bestPoint.y() + step * std::sin(a));
-            const auto shortfall = starShortfallAt(cdt, v, q, static_cast<Index>(boundaryCount), bound, sizeFactor);
-            if (better(shortfall))
-            {
-              best = shortfall;
-              bestPoint = q;
-              improved = true;
-            }
-          }
-        }
-      }
-      if (bestPoint != start)
-      {
-        v->set_point(bestPoint);
         moved = true;
       }
     }
-    // flips that raise the smaller angle of the two triangles of an edge
     bool flipped = true;
     for (int round = 0; flipped && round < 4; ++round)
     {
-      flipped = false;
-      std::map<std::pair<Index, Index>, std::pair<Face, int>> edges;
-      for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
-      {
-        if (!f->info().inside)
-        {
-          continue;
-        }
-        for (int i = 0; i < 3; ++i)
-        {
-          const Face g = f->neighbor(i);
-          if (f->is_constrained(i) || cdt.is_infinite(g) || !g->info().inside)
-          {
-            continue;
-          }
-          const Index a = f->vertex(CDT::ccw(i))->info().index, b = f->vertex(CDT::cw(i))->info().index;
-          edges.insert({ { std::min(a, b), std::max(a, b) }, { f, i } });
-        }
-      }
-      for (const auto& [key, edge] : edges)
-      {
-        Face f = edge.first;
-        const int i = edge.second;
-        // the edge may have been flipped away already
-        const Index a = f->vertex(CDT::ccw(i))->info().index, b = f->vertex(CDT::cw(i))->info().index;
-        if (std::make_pair(std::min(a, b), std::max(a, b)) != key || f->is_constrained(i))
-        {
-          continue;
-        }
-        const Face g = f->neighbor(i);
-        const Point& p = f->vertex(i)->point();
-        const Point& q = g->vertex(g->index(f))->point();
-        const Point& u = f->vertex(CDT::ccw(i))->point();
-        const Point& t = f->vertex(CDT::cw(i))->point();
-        if (CGAL::orientation(p, u, q) != CGAL::LEFT_TURN || CGAL::orientation(p, q, t) != CGAL::LEFT_TURN)
-        {
-          continue; // not a convex quadrilateral
-        }
-        // nor a new diagonal longer than the old one and than the size allows
-        const double diagonal = std::sqrt(CGAL::squared_distance(p, q));
-        const double allowed = sizeFactor * (f->vertex(i)->info().size + g->vertex(g->index(f))->info().size) / 2;
-        if (diagonal > allowed && diagonal * diagonal > CGAL::squared_distance(u, t))
-        {
-          continue;
-        }
-        // the same measure as for moves: the deficits, then the smaller angle
-        auto shortfall = [&](double x, double y) {
-          return std::make_pair(std::max(0.0, bound - x) + std::max(0.0, bound - y), -std::min(x, y));
-        };
-        const auto now = shortfall(minimumAngle(p, u, t), minimumAngle(q, t, u));
-        const auto then = shortfall(minimumAngle(p, u, q), minimumAngle(p, q, t));
-        // and, like a move, never at the price of a worse smallest angle, nor
-        // making a triangle without a boundary point poor
-        const bool noWorse = -then.second >= std::min(-now.second, bound);
-        const Index boundary = static_cast<Index>(boundaryCount);
-        const Index ip = f->vertex(i)->info().index, iq = g->vertex(g->index(f))->info().index;
-        auto poorInside = [&](Index x, Index y, Index z, double angle) {
-          return angle < bound && x >= boundary && y >= boundary && z >= boundary;
-        };
-        const bool keepsInsideGood = !poorInside(ip, a, iq, minimumAngle(p, u, q)) &&
-          !poorInside(ip, iq, b, minimumAngle(p, q, t));
-        if (noWorse && keepsInsideGood &&
-          (then.first < now.first - 1e-12 || (then.first <= now.first && then.second < now.second - 1e-12)))
-        {
-          cdt.flip(f, i);
-          flipped = true;
-        }
-      }
+      flipped = flipRound(cdt, boundary, bound, sizeFactor);
     }
     if (!moved && !flipped)
     {
@@ -273,29 +304,25 @@ FaceKey keyOf(Face f)
   std::sort(k.begin(), k.end());
   return k;
 }
-} // namespace
 
-InterfaceTriangulationResult triangulateInterface(
-  const PlanarRegion& region, const InterfaceTriangulationOptions& options)
+// Why the region cannot be triangulated with these options, before any
+// triangulation is built; empty if it can.
+std::string regionError(const PlanarRegion& region, const InterfaceTriangulationOptions& options)
 {
-  InterfaceTriangulationResult result;
   const std::size_t n = region.points.size();
   if (!(options.minimumAngleDegrees > 0 && options.minimumAngleDegrees <= 34) ||
     !(options.maximumEdgeLength >= 0))
   {
-    result.error = "invalid options: the minimum angle must lie in (0, 34] degrees and the "
-                   "maximum edge length must not be negative";
-    return result;
+    return "invalid options: the minimum angle must lie in (0, 34] degrees and the "
+           "maximum edge length must not be negative";
   }
   if (region.edges.size() < 3 || n < 3)
   {
-    result.error = "the region has fewer than three boundary segments";
-    return result;
+    return "the region has fewer than three boundary segments";
   }
   if (!(std::fabs(norm(region.normal) - 1.0) < 1e-9))
   {
-    result.error = "the plane normal is not a unit vector";
-    return result;
+    return "the plane normal is not a unit vector";
   }
   std::vector<int> degree(n, 0);
   for (const auto& e : region.edges)
@@ -303,8 +330,7 @@ InterfaceTriangulationResult triangulateInterface(
     if (e[0] < 0 || e[1] < 0 || e[0] >= static_cast<Index>(n) || e[1] >= static_cast<Index>(n) ||
       e[0] == e[1])
     {
-      result.error = "a boundary segment refers to a missing point or is degenerate";
-      return result;
+      return "a boundary segment refers to a missing point or is degenerate";
     }
     ++degree[e[0]];
     --degree[e[1]];
@@ -316,45 +342,113 @@ InterfaceTriangulationResult triangulateInterface(
       std::ostringstream msg;
       msg << "the boundary is not made of closed loops (point " << i
           << " has unequal numbers of incoming and outgoing segments)";
-      result.error = msg.str();
-      return result;
+      return msg.str();
     }
   }
-  Vec3 e1, e2;
-  planeBasis(region.normal, e1, e2);
-  auto to2D = [&](const Vec3& p) {
-    const Vec3 d = p - region.origin;
-    return Point(dot(d, e1), dot(d, e2));
-  };
-  // The size a vertex at p gets from the options, or `automatic`. A size
-  // field is used as given, except that inside, where the filters do not
-  // check it, a value that is not positive gives the automatic size and none
-  // goes below 1e-3 of the region's diagonal: a field crossing 0 inside a
-  // unit square refined towards the zero line until the point cap (over 4
-  // minutes); so floored, a region gets at most a few million points.
-  const bool fixedSize = options.maximumEdgeLength > 0 || options.sizeAt;
-  const double smallestField = 1e-3 * boundingBoxDiagonal(region.points);
-  auto sizeFor = [&](const Point& p, double automatic) {
-    if (!options.sizeAt)
-    {
-      return options.maximumEdgeLength > 0 ? options.maximumEdgeLength : automatic;
-    }
-    double field = options.sizeAt(region.origin + p.x() * e1 + p.y() * e2);
-    field = field > 0 && std::isfinite(field) ? std::max(field, smallestField) : automatic;
-    return options.maximumEdgeLength > 0 ? std::min(field, options.maximumEdgeLength) : field;
-  };
   for (const auto& p : region.points)
   {
     if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
     {
-      result.error = "a boundary point has a NaN or infinite coordinate";
-      return result;
+      return "a boundary point has a NaN or infinite coordinate";
     }
   }
+  return {};
+}
 
-  // Local boundary spacing at every boundary point.
-  std::vector<double> spacing(n, 0.0);
-  std::vector<int> segmentCount(n, 0);
+// The worst bad face first; among equally bad ones, the smallest key.
+using Entry = std::pair<double, FaceKey>;
+struct Worse
+{
+  bool operator()(const Entry& x, const Entry& y) const
+  {
+    return x.first < y.first || (x.first == y.first && x.second > y.second);
+  }
+};
+
+// The triangulation of one region and what its steps share: the boundary
+// (points 0..n-1, the region's own), the sizing of every vertex and the
+// queue of bad faces. Each step that can fail returns why, empty if not.
+struct InterfaceMesher
+{
+  InterfaceMesher(const PlanarRegion& r, const InterfaceTriangulationOptions& o);
+  const PlanarRegion& region;
+  const InterfaceTriangulationOptions& options;
+  const std::size_t n;
+  Vec3 e1, e2;
+  const bool fixedSize;
+  const double smallestField;
+  std::vector<double> spacing;   // summed length of the segments at each boundary point
+  std::vector<int> segmentCount; // segments at each boundary point
+  CDT cdt;
+  std::vector<Vertex> vertices; // of the boundary points
+  // Automatic sizing grows inward from the boundary spacing by a quarter of
+  // the distance, up to 1.5 x the region's mean boundary spacing, so the
+  // interface keeps the resolution of the surface around it.
+  static constexpr double gradation = 0.25;
+  double bound = 0, largestSize = 0, sizeFactor = 0;
+  std::size_t cap = 0; // most new points
+  std::priority_queue<Entry, std::vector<Entry>, Worse> queue;
+  std::map<FaceKey, Face> live;
+  std::vector<Point> added; // new points, in index order from n
+
+  Point to2D(const Vec3& p) const;
+  double sizeFor(const Point& p, double automatic) const;
+  void measureSpacing();
+  std::string insertBoundary();
+  std::string checkSegments() const;
+  std::string markInside();
+  void prepareRefinement();
+  double faceSize(Face f) const;
+  double badness(Face f) const;
+  void consider(Face f);
+  bool acceptable(const Point& p, Face hint, double clearance, Face& located);
+  void insertAt(const Point& p, Face located, const std::array<Vertex, 3>& around);
+  static std::vector<std::pair<Point, double>> splitCandidates(const std::array<Vertex, 3>& around);
+  void refine();
+  bool nextToBoundary(Face f) const;
+  void refinePoorAwayFromBoundary();
+  void writeOutput(InterfaceTriangulation& t) const;
+};
+
+InterfaceMesher::InterfaceMesher(const PlanarRegion& r, const InterfaceTriangulationOptions& o)
+  : region(r)
+  , options(o)
+  , n(r.points.size())
+  , fixedSize(o.maximumEdgeLength > 0 || o.sizeAt)
+  , smallestField(1e-3 * boundingBoxDiagonal(r.points))
+  , vertices(r.points.size())
+{
+  planeBasis(region.normal, e1, e2);
+}
+
+Point InterfaceMesher::to2D(const Vec3& p) const
+{
+  const Vec3 d = p - region.origin;
+  return Point(dot(d, e1), dot(d, e2));
+}
+
+// The size a vertex at p gets from the options, or `automatic`. A size
+// field is used as given, except that inside, where the filters do not
+// check it, a value that is not positive gives the automatic size and none
+// goes below 1e-3 of the region's diagonal: a field crossing 0 inside a
+// unit square refined towards the zero line until the point cap (over 4
+// minutes); so floored, a region gets at most a few million points.
+double InterfaceMesher::sizeFor(const Point& p, double automatic) const
+{
+  if (!options.sizeAt)
+  {
+    return options.maximumEdgeLength > 0 ? options.maximumEdgeLength : automatic;
+  }
+  double field = options.sizeAt(region.origin + p.x() * e1 + p.y() * e2);
+  field = field > 0 && std::isfinite(field) ? std::max(field, smallestField) : automatic;
+  return options.maximumEdgeLength > 0 ? std::min(field, options.maximumEdgeLength) : field;
+}
+
+// Local boundary spacing at every boundary point.
+void InterfaceMesher::measureSpacing()
+{
+  spacing.assign(n, 0.0);
+  segmentCount.assign(n, 0);
   for (const auto& e : region.edges)
   {
     const double l = norm(region.points[e[1]] - region.points[e[0]]);
@@ -364,9 +458,10 @@ InterfaceTriangulationResult triangulateInterface(
       ++segmentCount[v];
     }
   }
+}
 
-  CDT cdt;
-  std::vector<Vertex> vertices(n);
+std::string InterfaceMesher::insertBoundary()
+{
   try
   {
     for (std::size_t i = 0; i < n; ++i)
@@ -381,8 +476,7 @@ InterfaceTriangulationResult triangulateInterface(
         std::ostringstream msg;
         msg << "boundary points " << v->info().index << " and " << i
             << " coincide in the plane of the interface";
-        result.error = msg.str();
-        return result;
+        return msg.str();
       }
       v->info().index = static_cast<Index>(i);
       v->info().size = sizeFor(v->point(), segmentCount[i] > 0 ? spacing[i] / segmentCount[i]
@@ -396,9 +490,14 @@ InterfaceTriangulationResult triangulateInterface(
   }
   catch (const std::exception&)
   {
-    result.error = "boundary segments of the interface cross each other";
-    return result;
+    return "boundary segments of the interface cross each other";
   }
+  return {};
+}
+
+// Every segment is a constrained edge of its own.
+std::string InterfaceMesher::checkSegments() const
+{
   std::size_t constrained = 0;
   for (auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e)
   {
@@ -411,11 +510,14 @@ InterfaceTriangulationResult triangulateInterface(
   }
   if (constrained != undirected.size() || undirected.size() != region.edges.size())
   {
-    result.error = "a boundary point lies on another boundary segment, or a segment is repeated";
-    return result;
+    return "a boundary point lies on another boundary segment, or a segment is repeated";
   }
+  return {};
+}
 
-  // Inside: the face left of every directed segment, flooded without crossing segments.
+// Inside: the face left of every directed segment, flooded without crossing segments.
+std::string InterfaceMesher::markInside()
+{
   std::vector<Face> stack;
   for (const auto& e : region.edges)
   {
@@ -423,8 +525,7 @@ InterfaceTriangulationResult triangulateInterface(
     int i = 0;
     if (!cdt.is_edge(vertices[e[0]], vertices[e[1]], f, i))
     {
-      result.error = "internal: a boundary segment is missing from the triangulation";
-      return result;
+      return "internal: a boundary segment is missing from the triangulation";
     }
     // in face f, the edge opposite vertex i runs ccw(i) -> cw(i)
     if (f->vertex(CDT::ccw(i)) != vertices[e[0]])
@@ -444,8 +545,7 @@ InterfaceTriangulationResult triangulateInterface(
     }
     if (cdt.is_infinite(f))
     {
-      result.error = "the loops are not consistently oriented (the region to their left is unbounded)";
-      return result;
+      return "the loops are not consistently oriented (the region to their left is unbounded)";
     }
     f->info().inside = 1;
     for (int i = 0; i < 3; ++i)
@@ -465,19 +565,17 @@ InterfaceTriangulationResult triangulateInterface(
     const Face right = f->vertex(CDT::ccw(i)) == vertices[e[0]] ? f->neighbor(i) : f;
     if (right->info().inside)
     {
-      result.error = "the loops are not consistently oriented (a segment has the region on both sides)";
-      return result;
+      return "the loops are not consistently oriented (a segment has the region on both sides)";
     }
   }
+  return {};
+}
 
-  if (!options.refine)
-  {
-    result.ok = true; // the boundary is valid; no triangles wanted
-    return result;
-  }
-
-  // Refinement.
-  const double bound = options.minimumAngleDegrees * kPi / 180.0;
+// The angle bound, the largest automatic size, the cap on new points and
+// the size factor; then every bad face into the queue.
+void InterfaceMesher::prepareRefinement()
+{
+  bound = options.minimumAngleDegrees * kPi / 180.0;
   double area = 0;
   double smallestSize = std::numeric_limits<double>::infinity();
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
@@ -494,253 +592,257 @@ InterfaceTriangulationResult triangulateInterface(
       smallestSize = std::min(smallestSize, vertices[i]->info().size);
     }
   }
-  // Automatic sizing grows inward from the boundary spacing by a quarter of
-  // the distance, up to 1.5 x the region's mean boundary spacing, so the
-  // interface keeps the resolution of the surface around it.
-  const double gradation = 0.25;
   double meanSpacing = 0;
   for (const auto& e : region.edges)
   {
     meanSpacing += norm(region.points[e[1]] - region.points[e[0]]);
   }
   meanSpacing /= static_cast<double>(region.edges.size());
-  const double largestSize = 1.5 * meanSpacing;
-  const std::size_t cap = static_cast<std::size_t>(
-    std::min(2e7, 50.0 * area / (smallestSize * smallestSize) + 20.0 * n + 100));
+  largestSize = 1.5 * meanSpacing;
+  cap = static_cast<std::size_t>(std::min(2e7, 50.0 * area / (smallestSize * smallestSize) + 20.0 * n + 100));
   // Too large is an edge longer than the size field allows. A maximum edge
   // length is a hard bound; the automatic size is the local spacing, and
   // allowing 1.3 x it makes the mean edge about equal to the spacing.
-  const double sizeFactor = fixedSize ? 1.0 : 1.3;
-  auto faceSize = [&](Face f) {
-    return (f->vertex(0)->info().size + f->vertex(1)->info().size + f->vertex(2)->info().size) / 3.0;
-  };
-  // badness: < 0 good; larger is worse. Angle deficit first, then size excess.
-  auto badness = [&](Face f) {
-    const Point& a = f->vertex(0)->point();
-    const Point& b = f->vertex(1)->point();
-    const Point& c = f->vertex(2)->point();
-    const double angle = minimumAngle(a, b, c);
-    if (angle < bound)
-    {
-      return 1.0 + (bound - angle);
-    }
-    const double longest = longestEdge(a, b, c);
-    const double allowed = sizeFactor * faceSize(f);
-    return longest > allowed ? (longest / allowed - 1.0) * 1e-3 : -1.0;
-  };
-  using Entry = std::pair<double, FaceKey>;
-  auto worse = [](const Entry& x, const Entry& y) {
-    return x.first < y.first || (x.first == y.first && x.second > y.second);
-  };
-  std::priority_queue<Entry, std::vector<Entry>, decltype(worse)> queue(worse);
-  std::map<FaceKey, Face> live;
-  auto consider = [&](Face f) {
-    if (cdt.is_infinite(f) || !f->info().inside)
-    {
-      return;
-    }
-    const double b = badness(f);
-    if (b > 0)
-    {
-      const FaceKey key = keyOf(f);
-      live[key] = f;
-      queue.push({ b, key });
-    }
-  };
+  sizeFactor = fixedSize ? 1.0 : 1.3;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
   {
     consider(f);
   }
-  std::vector<Point> added;
-  // Whether a new vertex at p is acceptable, and the face that holds it:
-  //  * p lies strictly inside a face of the region;
-  //  * no vertex of its conflict zone is closer than `clearance` (no tiny
-  //    edges, so the refinement terminates);
-  //  * every boundary segment on the border of the conflict zone, which gets
-  //    p as the apex of its new triangle, gets a triangle that meets the angle
-  //    bound or is no worse than the one it has. Boundary segments are never
-  //    split, so this is what keeps the triangles on them as good as they can
-  //    be: a bad triangle on a segment could never be repaired.
-  auto acceptable = [&](const Point& p, Face hint, double clearance, Face& located) {
-    CDT::Locate_type lt;
-    int li = 0;
-    located = cdt.locate(p, lt, li, hint);
-    if (lt != CDT::FACE || cdt.is_infinite(located) || !located->info().inside)
+}
+
+double InterfaceMesher::faceSize(Face f) const
+{
+  return (f->vertex(0)->info().size + f->vertex(1)->info().size + f->vertex(2)->info().size) / 3.0;
+}
+
+// badness: < 0 good; larger is worse. Angle deficit first, then size excess.
+double InterfaceMesher::badness(Face f) const
+{
+  const Point& a = f->vertex(0)->point();
+  const Point& b = f->vertex(1)->point();
+  const Point& c = f->vertex(2)->point();
+  const double angle = minimumAngle(a, b, c);
+  if (angle < bound)
+  {
+    return 1.0 + (bound - angle);
+  }
+  const double longest = longestEdge(a, b, c);
+  const double allowed = sizeFactor * faceSize(f);
+  return longest > allowed ? (longest / allowed - 1.0) * 1e-3 : -1.0;
+}
+
+void InterfaceMesher::consider(Face f)
+{
+  if (cdt.is_infinite(f) || !f->info().inside)
+  {
+    return;
+  }
+  const double b = badness(f);
+  if (b > 0)
+  {
+    const FaceKey key = keyOf(f);
+    live[key] = f;
+    queue.push({ b, key });
+  }
+}
+
+// Whether a new vertex at p is acceptable, and the face that holds it:
+//  * p lies strictly inside a face of the region;
+//  * no vertex of its conflict zone is closer than `clearance` (no tiny
+//    edges, so the refinement terminates);
+//  * every boundary segment on the border of the conflict zone, which gets
+//    p as the apex of its new triangle, gets a triangle that meets the angle
+//    bound or is no worse than the one it has. Boundary segments are never
+//    split, so this is what keeps the triangles on them as good as they can
+//    be: a bad triangle on a segment could never be repaired.
+bool InterfaceMesher::acceptable(const Point& p, Face hint, double clearance, Face& located)
+{
+  CDT::Locate_type lt;
+  int li = 0;
+  located = cdt.locate(p, lt, li, hint);
+  if (lt != CDT::FACE || cdt.is_infinite(located) || !located->info().inside)
+  {
+    return false;
+  }
+  std::vector<Face> conflicts;
+  std::vector<CDT::Edge> border;
+  cdt.get_conflicts_and_boundary(p, std::back_inserter(conflicts), std::back_inserter(border), located);
+  const double clearance2 = clearance * clearance;
+  for (Face g : conflicts)
+  {
+    for (int i = 0; i < 3; ++i)
     {
-      return false;
-    }
-    std::vector<Face> conflicts;
-    std::vector<CDT::Edge> border;
-    cdt.get_conflicts_and_boundary(p, std::back_inserter(conflicts), std::back_inserter(border), located);
-    const double clearance2 = clearance * clearance;
-    for (Face g : conflicts)
-    {
-      for (int i = 0; i < 3; ++i)
-      {
-        if (CGAL::squared_distance(p, g->vertex(i)->point()) < clearance2)
-        {
-          return false;
-        }
-      }
-    }
-    for (const CDT::Edge& e : border)
-    {
-      // e is given by the face outside the conflict zone; across it lies the
-      // face in conflict that now rests on the segment
-      if (!e.first->is_constrained(e.second))
-      {
-        continue;
-      }
-      const Face now = e.first->neighbor(e.second);
-      const double before = minimumAngle(now->vertex(0)->point(), now->vertex(1)->point(), now->vertex(2)->point());
-      const double after = minimumAngle(
-        e.first->vertex(CDT::ccw(e.second))->point(), e.first->vertex(CDT::cw(e.second))->point(), p);
-      if (after < bound && after < before)
+      if (CGAL::squared_distance(p, g->vertex(i)->point()) < clearance2)
       {
         return false;
       }
     }
-    return true;
-  };
-  auto insertAt = [&](const Point& p, Face located, const std::array<Vertex, 3>& around) {
-    Vertex v = cdt.insert(p, located);
-    v->info().index = static_cast<Index>(n + added.size());
-    double size = std::numeric_limits<double>::infinity();
-    for (const Vertex& w : around)
+  }
+  for (const CDT::Edge& e : border)
+  {
+    // e is given by the face outside the conflict zone; across it lies the
+    // face in conflict that now rests on the segment
+    if (!e.first->is_constrained(e.second))
     {
-      size = std::min(size, w->info().size + gradation * std::sqrt(CGAL::squared_distance(p, w->point())));
+      continue;
     }
-    v->info().size = sizeFor(p, std::min(size, largestSize));
-    added.push_back(p);
-    auto f = cdt.incident_faces(v), done = f;
-    do
+    const Face now = e.first->neighbor(e.second);
+    const double before = minimumAngle(now->vertex(0)->point(), now->vertex(1)->point(), now->vertex(2)->point());
+    const double after = minimumAngle(
+      e.first->vertex(CDT::ccw(e.second))->point(), e.first->vertex(CDT::cw(e.second))->point(), p);
+    if (after < bound && after < before)
     {
-      f->info().inside = 1;
-    } while (++f != done);
-    do
-    {
-      consider(f);
-    } while (++f != done);
-  };
-  auto refine = [&]() {
-    while (!queue.empty() && added.size() < cap)
-    {
-      const Entry top = queue.top();
-      queue.pop();
-      auto it = live.find(top.second);
-      if (it == live.end())
-      {
-        continue;
-      }
-      Face f = it->second;
-      live.erase(it);
-      if (keyOf(f) != top.second || badness(f) != top.first)
-      {
-        continue; // stale: the face was destroyed or changed
-      }
-      const std::array<Vertex, 3> around{ f->vertex(0), f->vertex(1), f->vertex(2) };
-      // Candidates: the circumcentre, then points on the perpendicular
-      // bisector of the shortest edge between the circumcentre and the apex of
-      // the equilateral triangle on that edge (off-centres): nearer points
-      // disturb less, so they fit where the circumcentre would spoil a
-      // boundary segment's triangle.
-      const Point centre = CGAL::circumcenter(around[0]->point(), around[1]->point(), around[2]->point());
-      int k = 0; // the vertex opposite the shortest edge
-      double shortest = std::numeric_limits<double>::infinity();
-      for (int i = 0; i < 3; ++i)
-      {
-        const double l = CGAL::squared_distance(around[CDT::ccw(i)]->point(), around[CDT::cw(i)]->point());
-        if (l < shortest)
-        {
-          shortest = l;
-          k = i;
-        }
-      }
-      shortest = std::sqrt(shortest);
-      const Point& p = around[CDT::ccw(k)]->point();
-      const Point& q = around[CDT::cw(k)]->point();
-      const Point middle((p.x() + q.x()) / 2, (p.y() + q.y()) / 2);
-      // unit normal of pq towards the opposite vertex (the inside of f)
-      double ux = -(q.y() - p.y()) / shortest, uy = (q.x() - p.x()) / shortest;
-      const Point& apex = around[k]->point();
-      if ((apex.x() - middle.x()) * ux + (apex.y() - middle.y()) * uy < 0)
-      {
-        ux = -ux;
-        uy = -uy;
-      }
-      const double reach = (centre.x() - middle.x()) * ux + (centre.y() - middle.y()) * uy;
-      const double clearance = 0.5 * shortest;
-      std::vector<std::pair<Point, double>> candidates{ { centre, clearance } }; // and their clearance
-      const double nearest = 0.5 * std::sqrt(3.0) * shortest;
-      if (reach > nearest)
-      {
-        for (int step = 1; step <= 4; ++step)
-        {
-          const double h = reach * std::pow(nearest / reach, step / 4.0);
-          candidates.push_back({ Point(middle.x() + h * ux, middle.y() + h * uy), clearance });
-        }
-      }
-      else
-      {
-        // a flat triangle (an obtuse angle near 180 degrees, as over a boundary
-        // point where the boundary runs straight on) has its circumcentre
-        // behind the shortest edge: try the apex of the equilateral triangle on
-        // that edge, and half way to it
-        for (double h : { nearest, 0.5 * nearest })
-        {
-          candidates.push_back({ Point(middle.x() + h * ux, middle.y() + h * uy), clearance });
-        }
-      }
-      for (const auto& [candidate, distance] : candidates)
-      {
-        Face located;
-        if (acceptable(candidate, f, distance, located))
-        {
-          insertAt(candidate, located, around);
-          break;
-        }
-      }
+      return false;
     }
-  };
-  refine();
+  }
+  return true;
+}
 
-  // Smoothing: the refinement cannot move a vertex once placed, and a
-  // boundary segment is never split, so triangles can stay thin where a
-  // vertex sits too low over a long segment. Each new vertex of a bad
-  // triangle moves, within its star, to where the worst angle of its
-  // triangles is largest; then unconstrained edges are flipped where that
-  // raises the smaller angle of the pair. Boundary points never move.
-  smoothBadTriangles(cdt, n, bound, sizeFactor);
+void InterfaceMesher::insertAt(const Point& p, Face located, const std::array<Vertex, 3>& around)
+{
+  Vertex v = cdt.insert(p, located);
+  v->info().index = static_cast<Index>(n + added.size());
+  double size = std::numeric_limits<double>::infinity();
+  for (const Vertex& w : around)
+  {
+    size = std::min(size, w->info().size + gradation * std::sqrt(CGAL::squared_distance(p, w->point())));
+  }
+  v->info().size = sizeFor(p, std::min(size, largestSize));
+  added.push_back(p);
+  auto f = cdt.incident_faces(v), done = f;
+  do
+  {
+    f->info().inside = 1;
+  } while (++f != done);
+  do
+  {
+    consider(f);
+  } while (++f != done);
+}
 
-  // A triangle is next to the boundary if it has a boundary point or its
-  // circumcircle reaches a boundary segment: only a point inside that circle
-  // could improve it, and such a point would spoil the segment's triangle.
-  auto nextToBoundary = [&](Face f) {
-    const Point& a = f->vertex(0)->point();
-    const Point& b = f->vertex(1)->point();
-    const Point& c = f->vertex(2)->point();
-    for (int i = 0; i < 3; ++i)
+// Candidates for a point that splits the face with these corners, each
+// with its clearance: the circumcentre, then points on the perpendicular
+// bisector of the shortest edge between the circumcentre and the apex of
+// the equilateral triangle on that edge (off-centres): nearer points
+// disturb less, so they fit where the circumcentre would spoil a
+// boundary segment's triangle.
+std::vector<std::pair<Point, double>> InterfaceMesher::splitCandidates(const std::array<Vertex, 3>& around)
+{
+  const Point centre = CGAL::circumcenter(around[0]->point(), around[1]->point(), around[2]->point());
+  int k = 0; // the vertex opposite the shortest edge
+  double shortest = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 3; ++i)
+  {
+    const double l = CGAL::squared_distance(around[CDT::ccw(i)]->point(), around[CDT::cw(i)]->point());
+    if (l < shortest)
     {
-      if (f->vertex(i)->info().index < static_cast<Index>(n))
+      shortest = l;
+      k = i;
+    }
+  }
+  shortest = std::sqrt(shortest);
+  const Point& p = around[CDT::ccw(k)]->point();
+  const Point& q = around[CDT::cw(k)]->point();
+  const Point middle((p.x() + q.x()) / 2, (p.y() + q.y()) / 2);
+  // unit normal of pq towards the opposite vertex (the inside of f)
+  double ux = -(q.y() - p.y()) / shortest, uy = (q.x() - p.x()) / shortest;
+  const Point& apex = around[k]->point();
+  if ((apex.x() - middle.x()) * ux + (apex.y() - middle.y()) * uy < 0)
+  {
+    ux = -ux;
+    uy = -uy;
+  }
+  const double reach = (centre.x() - middle.x()) * ux + (centre.y() - middle.y()) * uy;
+  const double clearance = 0.5 * shortest;
+  std::vector<std::pair<Point, double>> candidates{ { centre, clearance } }; // and their clearance
+  const double nearest = 0.5 * std::sqrt(3.0) * shortest;
+  if (reach > nearest)
+  {
+    for (int step = 1; step <= 4; ++step)
+    {
+      const double h = reach * std::pow(nearest / reach, step / 4.0);
+      candidates.push_back({ Point(middle.x() + h * ux, middle.y() + h * uy), clearance });
+    }
+  }
+  else
+  {
+    // a flat triangle (an obtuse angle near 180 degrees, as over a boundary
+    // point where the boundary runs straight on) has its circumcentre
+    // behind the shortest edge: try the apex of the equilateral triangle on
+    // that edge, and half way to it
+    for (double h : { nearest, 0.5 * nearest })
+    {
+      candidates.push_back({ Point(middle.x() + h * ux, middle.y() + h * uy), clearance });
+    }
+  }
+  return candidates;
+}
+
+// Splits the worst face of the queue at its first acceptable candidate
+// until none is left or the cap is reached.
+void InterfaceMesher::refine()
+{
+  while (!queue.empty() && added.size() < cap)
+  {
+    const Entry top = queue.top();
+    queue.pop();
+    auto it = live.find(top.second);
+    if (it == live.end())
+    {
+      continue;
+    }
+    Face f = it->second;
+    live.erase(it);
+    if (keyOf(f) != top.second || badness(f) != top.first)
+    {
+      continue; // stale: the face was destroyed or changed
+    }
+    const std::array<Vertex, 3> around{ f->vertex(0), f->vertex(1), f->vertex(2) };
+    for (const auto& [candidate, distance] : splitCandidates(around))
+    {
+      Face located;
+      if (acceptable(candidate, f, distance, located))
       {
-        return true;
+        insertAt(candidate, located, around);
+        break;
       }
     }
-    const Point centre = CGAL::circumcenter(a, b, c);
-    const double radius2 = CGAL::squared_radius(a, b, c);
-    for (const auto& e : region.edges)
+  }
+}
+
+// A triangle is next to the boundary if it has a boundary point or its
+// circumcircle reaches a boundary segment: only a point inside that circle
+// could improve it, and such a point would spoil the segment's triangle.
+bool InterfaceMesher::nextToBoundary(Face f) const
+{
+  const Point& a = f->vertex(0)->point();
+  const Point& b = f->vertex(1)->point();
+  const Point& c = f->vertex(2)->point();
+  for (int i = 0; i < 3; ++i)
+  {
+    if (f->vertex(i)->info().index < static_cast<Index>(n))
     {
-      if (CGAL::squared_distance(centre, K::Segment_2(vertices[e[0]]->point(), vertices[e[1]]->point())) < radius2)
-      {
-        return true;
-      }
+      return true;
     }
-    return false;
-  };
-  // Smoothing moves points of poor triangles next to the boundary, and can
-  // carry one of them away from it, where the refinement would have split
-  // it: refine such triangles now (their circumcentres are away from the
-  // boundary too).
+  }
+  const Point centre = CGAL::circumcenter(a, b, c);
+  const double radius2 = CGAL::squared_radius(a, b, c);
+  for (const auto& e : region.edges)
+  {
+    if (CGAL::squared_distance(centre, K::Segment_2(vertices[e[0]]->point(), vertices[e[1]]->point())) < radius2)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Smoothing moves points of poor triangles next to the boundary, and can
+// carry one of them away from it, where the refinement would have split
+// it: refine such triangles now (their circumcentres are away from the
+// boundary too).
+void InterfaceMesher::refinePoorAwayFromBoundary()
+{
   bool poorAwayFromBoundary = false;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
   {
@@ -754,9 +856,10 @@ InterfaceTriangulationResult triangulateInterface(
   {
     refine();
   }
+}
 
-  // Output.
-  InterfaceTriangulation& t = result.triangulation;
+void InterfaceMesher::writeOutput(InterfaceTriangulation& t) const
+{
   t.newPoints.resize(added.size());
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
   {
@@ -802,6 +905,49 @@ InterfaceTriangulationResult triangulateInterface(
     std::rotate(tri.begin(), std::min_element(tri.begin(), tri.end()), tri.end());
   }
   std::sort(t.triangles.begin(), t.triangles.end());
+}
+} // namespace
+
+InterfaceTriangulationResult triangulateInterface(
+  const PlanarRegion& region, const InterfaceTriangulationOptions& options)
+{
+  InterfaceTriangulationResult result;
+  result.error = regionError(region, options);
+  if (!result.error.empty())
+  {
+    return result;
+  }
+  InterfaceMesher mesher(region, options);
+  mesher.measureSpacing();
+  result.error = mesher.insertBoundary();
+  if (result.error.empty())
+  {
+    result.error = mesher.checkSegments();
+  }
+  if (result.error.empty())
+  {
+    result.error = mesher.markInside();
+  }
+  if (!result.error.empty())
+  {
+    return result;
+  }
+  if (!options.refine)
+  {
+    result.ok = true; // the boundary is valid; no triangles wanted
+    return result;
+  }
+  mesher.prepareRefinement();
+  mesher.refine();
+  // Smoothing: the refinement cannot move a vertex once placed, and a
+  // boundary segment is never split, so triangles can stay thin where a
+  // vertex sits too low over a long segment. Each new vertex of a bad
+  // triangle moves, within its star, to where the worst angle of its
+  // triangles is largest; then unconstrained edges are flipped where that
+  // raises the smaller angle of the pair. Boundary points never move.
+  smoothBadTriangles(mesher.cdt, mesher.n, mesher.bound, mesher.sizeFactor);
+  mesher.refinePoorAwayFromBoundary();
+  mesher.writeOutput(result.triangulation);
   result.ok = true;
   return result;
 }

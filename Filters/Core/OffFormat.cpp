@@ -175,6 +175,301 @@ OffReadResult failure(std::string message)
   r.error = std::move(message);
   return r;
 }
+constexpr long long kReserveLimit = 1 << 20; // a lying header must not allocate
+
+// The reading of one OFF text, and what its steps share: the lines, the
+// counts of the header and the surface being built. Each step returns the
+// error, empty if there is none.
+class OffParser
+{
+public:
+  explicit OffParser(std::istream& in)
+    : Lines(in)
+  {
+  }
+
+  std::string readHeader();
+  std::string readCounts();
+  std::string readVertices();
+  std::string readFaces();
+  std::string checkEnd();
+  OffReadResult& result() { return this->Result; }
+
+private:
+  std::string endOfFile(const std::string& message) const;
+  std::string readVertex(long long i, Vec3& point) const;
+  std::string readFace(long long f);
+  std::string readCorners(const std::string& face, long long n);
+
+  OffLines Lines;
+  std::vector<std::string_view> Words;
+  long long VertexCount = 0, FaceCount = 0;
+  std::string CountsHint; // where the counts are and what they say, for the messages
+  std::vector<Index> Corners;
+  OffReadResult Result;
+};
+
+std::string OffParser::endOfFile(const std::string& message) const
+{
+  if (this->Lines.failedToRead())
+  {
+    return "reading failed after line " + std::to_string(this->Lines.number());
+  }
+  return message;
+}
+
+std::string OffParser::readHeader()
+{
+  if (!this->Lines.next(this->Words))
+  {
+    return endOfFile(this->Lines.number() > 0 ? "the file is empty (it has only comments and blank lines)"
+                                              : "the file is empty");
+  }
+  if (!isKnownHeader(this->Words[0]))
+  {
+    const std::string_view w = this->Words[0];
+    if (w.size() > 3 && w.substr(w.size() - 3) == "OFF")
+    {
+      return at(this->Lines.number()) + "the header " + quoted(w) +
+        " is not supported (only OFF, COFF, NOFF, CNOFF and STOFF; no 4D or nOFF)";
+    }
+    return at(this->Lines.number()) + "expected the header OFF (or COFF, NOFF, CNOFF, STOFF) but found " +
+      quoted(w) + ": this is not an OFF file";
+  }
+  if (this->Words.size() > 1 && this->Words[1] == "BINARY")
+  {
+    return at(this->Lines.number()) + "binary OFF files are not supported; save it as text OFF";
+  }
+  return {};
+}
+
+// The counts, on the header line or the next one.
+std::string OffParser::readCounts()
+{
+  std::vector<std::string_view> counts(this->Words.begin() + 1, this->Words.end());
+  if (counts.empty())
+  {
+    if (!this->Lines.next(this->Words))
+    {
+      return endOfFile("the file ends after the header, before the vertex and face counts");
+    }
+    counts = this->Words;
+  }
+  const int countsLine = this->Lines.number();
+  if (counts.size() < 2 || counts.size() > 3)
+  {
+    return at(countsLine) + "expected the counts 'vertices faces [edges]' but found " +
+      plural(static_cast<long long>(counts.size()), "value");
+  }
+  long long nv = 0, nf = 0, ne = 0;
+  const char* names[3] = { "vertex", "face", "edge" };
+  long long* values[3] = { &nv, &nf, &ne };
+  for (std::size_t k = 0; k < counts.size(); ++k)
+  {
+    const Parsed p = parseNumber(counts[k], *values[k]);
+    if (p != Parsed::Ok)
+    {
+      return at(countsLine) + "the " + names[k] + " count " + quoted(counts[k]) +
+        (p == Parsed::OutOfRange ? " is too large" : " is not a whole number");
+    }
+    if (*values[k] < 0)
+    {
+      return at(countsLine) + "the " + names[k] + " count is negative (" + std::to_string(*values[k]) + ")";
+    }
+  }
+  if (nv == 0)
+  {
+    return at(countsLine) + "header says 0 vertices: there is no surface";
+  }
+  if (nf == 0)
+  {
+    return at(countsLine) + "header says 0 faces: there is no surface";
+  }
+  this->VertexCount = nv;
+  this->FaceCount = nf;
+  this->CountsHint = " (line " + std::to_string(countsLine) + " says " + std::to_string(nv) +
+    (nv == 1 ? " vertex" : " vertices") + " and " + plural(nf, "face") + ")";
+  return {};
+}
+
+// Vertices, one per line; extra values (colour, normal, texture) are ignored.
+std::string OffParser::readVertices()
+{
+  TriangleSurface& s = this->Result.data.surface;
+  s.points.reserve(static_cast<std::size_t>(std::min(this->VertexCount, kReserveLimit)));
+  for (long long i = 0; i < this->VertexCount; ++i)
+  {
+    if (!this->Lines.next(this->Words))
+    {
+      return endOfFile("expected " + std::to_string(this->VertexCount) + " vertices but the file ends after " +
+        std::to_string(i) + this->CountsHint);
+    }
+    Vec3 point;
+    const std::string error = readVertex(i, point);
+    if (!error.empty())
+    {
+      return error;
+    }
+    s.points.push_back(point);
+  }
+  return {};
+}
+
+// Vertex i from the words of its line.
+std::string OffParser::readVertex(long long i, Vec3& point) const
+{
+  const std::vector<std::string_view>& words = this->Words;
+  if (words.size() < 3)
+  {
+    return at(this->Lines.number()) + "vertex " + std::to_string(i) + " has " +
+      plural(static_cast<long long>(words.size()), "coordinate") + ", expected 3";
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    const Parsed p = parseNumber(words[k], point[k]);
+    if (p == Parsed::OutOfRange)
+    {
+      return at(this->Lines.number()) + "vertex " + std::to_string(i) + " has a coordinate " +
+        quoted(words[k]) + " out of the range of double precision";
+    }
+    if (p != Parsed::Ok)
+    {
+      return at(this->Lines.number()) + "vertex " + std::to_string(i) + " has a non-numeric coordinate " +
+        quoted(words[k]);
+    }
+    if (std::isnan(point[k]))
+    {
+      return at(this->Lines.number()) + "vertex " + std::to_string(i) + " has a NaN coordinate";
+    }
+    if (!std::isfinite(point[k]))
+    {
+      return at(this->Lines.number()) + "vertex " + std::to_string(i) + " has an infinite coordinate";
+    }
+  }
+  return {};
+}
+
+// Faces: n i1 .. in [colour: up to 4 values].
+std::string OffParser::readFaces()
+{
+  TriangleSurface& s = this->Result.data.surface;
+  s.triangles.reserve(static_cast<std::size_t>(std::min(this->FaceCount, kReserveLimit)));
+  this->Result.data.sourcePolygon.reserve(s.triangles.capacity());
+  for (long long f = 0; f < this->FaceCount; ++f)
+  {
+    if (!this->Lines.next(this->Words))
+    {
+      return endOfFile("expected " + std::to_string(this->FaceCount) + " faces but the file ends after " +
+        std::to_string(f) + this->CountsHint);
+    }
+    const std::string error = readFace(f);
+    if (!error.empty())
+    {
+      return error;
+    }
+  }
+  return {};
+}
+
+// Face f from the words of its line: its triangles, or those of its polygon.
+std::string OffParser::readFace(long long f)
+{
+  const std::vector<std::string_view>& words = this->Words;
+  const std::string face = at(this->Lines.number()) + "face " + std::to_string(f);
+  long long n = 0;
+  if (parseNumber(words[0], n) != Parsed::Ok)
+  {
+    return face + " does not start with its number of corners (found " + quoted(words[0]) + ")" +
+      this->CountsHint;
+  }
+  if (n < 3)
+  {
+    return face + " has " + plural(n, "corner") + "; a face needs at least 3" + this->CountsHint;
+  }
+  const long long listed = static_cast<long long>(words.size()) - 1;
+  if (listed < n)
+  {
+    return face + " announces " + std::to_string(n) + " corners but lists " + std::to_string(listed) +
+      " values" + this->CountsHint;
+  }
+  if (listed - n > 4)
+  {
+    return face + " announces " + std::to_string(n) + " corners but has " + std::to_string(listed) +
+      " values after the count (at most 4 colour values may follow the corners)";
+  }
+  const std::string error = readCorners(face, n);
+  if (!error.empty())
+  {
+    return error;
+  }
+  for (std::size_t k = static_cast<std::size_t>(n) + 1; k < words.size(); ++k)
+  {
+    double colour = 0;
+    if (parseNumber(words[k], colour) == Parsed::NotANumber)
+    {
+      return face + " has a non-numeric colour value " + quoted(words[k]) + " after its corners";
+    }
+  }
+  TriangleSurface& s = this->Result.data.surface;
+  const std::vector<Index>& corners = this->Corners;
+  const std::size_t before = s.triangles.size();
+  if (n == 3)
+  {
+    s.triangles.push_back({ corners[0], corners[1], corners[2] });
+  }
+  else if (!triangulatePolygon(s.points, corners, s.triangles))
+  {
+    return face + " is a polygon of " + std::to_string(n) +
+      " corners with zero area or crossing edges; it cannot be triangulated";
+  }
+  this->Result.data.sourcePolygon.insert(this->Result.data.sourcePolygon.end(), s.triangles.size() - before, f);
+  return {};
+}
+
+// The n corners of a face, from the words after its count.
+std::string OffParser::readCorners(const std::string& face, long long n)
+{
+  const long long nv = this->VertexCount;
+  this->Corners.clear();
+  for (long long k = 1; k <= n; ++k)
+  {
+    long long index = 0;
+    const Parsed p = parseNumber(this->Words[static_cast<std::size_t>(k)], index);
+    if (p != Parsed::Ok)
+    {
+      return face + " has a vertex index " + quoted(this->Words[static_cast<std::size_t>(k)]) +
+        " that is not a whole number";
+    }
+    if (index < 0 || index >= nv)
+    {
+      return face + " refers to vertex " + std::to_string(index) + ", but there " +
+        (nv == 1 ? "is only 1 vertex" : "are only " + std::to_string(nv) + " vertices") + " (numbered from 0)";
+    }
+    if (std::find(this->Corners.begin(), this->Corners.end(), index) != this->Corners.end())
+    {
+      return face + " uses vertex " + std::to_string(index) + " twice";
+    }
+    this->Corners.push_back(index);
+  }
+  return {};
+}
+
+// Nothing may follow: more lines mean the counts are wrong.
+std::string OffParser::checkEnd()
+{
+  if (this->Lines.next(this->Words))
+  {
+    return at(this->Lines.number()) +
+      "unexpected data after the last face; the file has more vertices or faces than its header says" +
+      this->CountsHint;
+  }
+  if (this->Lines.failedToRead())
+  {
+    return "reading failed after line " + std::to_string(this->Lines.number());
+  }
+  this->Result.data.polygonCount = static_cast<std::size_t>(this->FaceCount);
+  return {};
+}
 } // namespace
 
 bool triangulatePolygon(
@@ -291,217 +586,18 @@ bool triangulatePolygon(
 
 OffReadResult readOff(std::istream& in)
 {
-  OffLines lines(in);
-  std::vector<std::string_view> words;
-  auto endOfFile = [&](const std::string& message) {
-    if (lines.failedToRead())
+  OffParser parser(in);
+  for (auto step : { &OffParser::readHeader, &OffParser::readCounts, &OffParser::readVertices,
+         &OffParser::readFaces, &OffParser::checkEnd })
+  {
+    std::string error = (parser.*step)();
+    if (!error.empty())
     {
-      return failure("reading failed after line " + std::to_string(lines.number()));
-    }
-    return failure(message);
-  };
-
-  // header
-  if (!lines.next(words))
-  {
-    return endOfFile(lines.number() > 0 ? "the file is empty (it has only comments and blank lines)"
-                                        : "the file is empty");
-  }
-  if (!isKnownHeader(words[0]))
-  {
-    const std::string_view w = words[0];
-    if (w.size() > 3 && w.substr(w.size() - 3) == "OFF")
-    {
-      return failure(at(lines.number()) + "the header " + quoted(w) +
-        " is not supported (only OFF, COFF, NOFF, CNOFF and STOFF; no 4D or nOFF)");
-    }
-    return failure(at(lines.number()) + "expected the header OFF (or COFF, NOFF, CNOFF, STOFF) but found " +
-      quoted(w) + ": this is not an OFF file");
-  }
-  if (words.size() > 1 && words[1] == "BINARY")
-  {
-    return failure(at(lines.number()) + "binary OFF files are not supported; save it as text OFF");
-  }
-
-  // counts, on the header line or the next one
-  std::vector<std::string_view> counts(words.begin() + 1, words.end());
-  if (counts.empty())
-  {
-    if (!lines.next(words))
-    {
-      return endOfFile("the file ends after the header, before the vertex and face counts");
-    }
-    counts = words;
-  }
-  const int countsLine = lines.number();
-  if (counts.size() < 2 || counts.size() > 3)
-  {
-    return failure(at(countsLine) + "expected the counts 'vertices faces [edges]' but found " +
-      plural(static_cast<long long>(counts.size()), "value"));
-  }
-  long long nv = 0, nf = 0, ne = 0;
-  const char* names[3] = { "vertex", "face", "edge" };
-  long long* values[3] = { &nv, &nf, &ne };
-  for (std::size_t k = 0; k < counts.size(); ++k)
-  {
-    const Parsed p = parseNumber(counts[k], *values[k]);
-    if (p != Parsed::Ok)
-    {
-      return failure(at(countsLine) + "the " + names[k] + " count " + quoted(counts[k]) +
-        (p == Parsed::OutOfRange ? " is too large" : " is not a whole number"));
-    }
-    if (*values[k] < 0)
-    {
-      return failure(at(countsLine) + "the " + names[k] + " count is negative (" +
-        std::to_string(*values[k]) + ")");
+      return failure(std::move(error));
     }
   }
-  if (nv == 0)
-  {
-    return failure(at(countsLine) + "header says 0 vertices: there is no surface");
-  }
-  if (nf == 0)
-  {
-    return failure(at(countsLine) + "header says 0 faces: there is no surface");
-  }
-  const std::string countsHint = " (line " + std::to_string(countsLine) + " says " +
-    std::to_string(nv) + (nv == 1 ? " vertex" : " vertices") + " and " + plural(nf, "face") + ")";
-
-  // vertices, one per line; extra values (colour, normal, texture) are ignored
-  OffReadResult r;
-  TriangleSurface& s = r.data.surface;
-  constexpr long long kReserveLimit = 1 << 20; // a lying header must not allocate
-  s.points.reserve(static_cast<std::size_t>(std::min(nv, kReserveLimit)));
-  for (long long i = 0; i < nv; ++i)
-  {
-    if (!lines.next(words))
-    {
-      return endOfFile("expected " + std::to_string(nv) + " vertices but the file ends after " +
-        std::to_string(i) + countsHint);
-    }
-    if (words.size() < 3)
-    {
-      return failure(at(lines.number()) + "vertex " + std::to_string(i) + " has " +
-        plural(static_cast<long long>(words.size()), "coordinate") + ", expected 3");
-    }
-    Vec3 point;
-    for (int k = 0; k < 3; ++k)
-    {
-      const Parsed p = parseNumber(words[k], point[k]);
-      if (p == Parsed::OutOfRange)
-      {
-        return failure(at(lines.number()) + "vertex " + std::to_string(i) + " has a coordinate " +
-          quoted(words[k]) + " out of the range of double precision");
-      }
-      if (p != Parsed::Ok)
-      {
-        return failure(at(lines.number()) + "vertex " + std::to_string(i) +
-          " has a non-numeric coordinate " + quoted(words[k]));
-      }
-      if (std::isnan(point[k]))
-      {
-        return failure(at(lines.number()) + "vertex " + std::to_string(i) + " has a NaN coordinate");
-      }
-      if (!std::isfinite(point[k]))
-      {
-        return failure(
-          at(lines.number()) + "vertex " + std::to_string(i) + " has an infinite coordinate");
-      }
-    }
-    s.points.push_back(point);
-  }
-
-  // faces: n i1 .. in [colour: up to 4 values]
-  s.triangles.reserve(static_cast<std::size_t>(std::min(nf, kReserveLimit)));
-  r.data.sourcePolygon.reserve(s.triangles.capacity());
-  std::vector<Index> corners;
-  for (long long f = 0; f < nf; ++f)
-  {
-    if (!lines.next(words))
-    {
-      return endOfFile("expected " + std::to_string(nf) + " faces but the file ends after " +
-        std::to_string(f) + countsHint);
-    }
-    const std::string face = at(lines.number()) + "face " + std::to_string(f);
-    long long n = 0;
-    if (parseNumber(words[0], n) != Parsed::Ok)
-    {
-      return failure(face + " does not start with its number of corners (found " +
-        quoted(words[0]) + ")" + countsHint);
-    }
-    if (n < 3)
-    {
-      return failure(face + " has " + plural(n, "corner") + "; a face needs at least 3" + countsHint);
-    }
-    const long long listed = static_cast<long long>(words.size()) - 1;
-    if (listed < n)
-    {
-      return failure(face + " announces " + std::to_string(n) + " corners but lists " +
-        std::to_string(listed) + " values" + countsHint);
-    }
-    if (listed - n > 4)
-    {
-      return failure(face + " announces " + std::to_string(n) + " corners but has " +
-        std::to_string(listed) + " values after the count (at most 4 colour values may follow the corners)");
-    }
-    corners.clear();
-    for (long long k = 1; k <= n; ++k)
-    {
-      long long index = 0;
-      const Parsed p = parseNumber(words[static_cast<std::size_t>(k)], index);
-      if (p != Parsed::Ok)
-      {
-        return failure(face + " has a vertex index " + quoted(words[static_cast<std::size_t>(k)]) +
-          " that is not a whole number");
-      }
-      if (index < 0 || index >= nv)
-      {
-        return failure(face + " refers to vertex " + std::to_string(index) + ", but there " +
-          (nv == 1 ? "is only 1 vertex" : "are only " + std::to_string(nv) + " vertices") +
-          " (numbered from 0)");
-      }
-      if (std::find(corners.begin(), corners.end(), index) != corners.end())
-      {
-        return failure(face + " uses vertex " + std::to_string(index) + " twice");
-      }
-      corners.push_back(index);
-    }
-    for (std::size_t k = static_cast<std::size_t>(n) + 1; k < words.size(); ++k)
-    {
-      double colour = 0;
-      if (parseNumber(words[k], colour) == Parsed::NotANumber)
-      {
-        return failure(face + " has a non-numeric colour value " + quoted(words[k]) +
-          " after its corners");
-      }
-    }
-    const std::size_t before = s.triangles.size();
-    if (n == 3)
-    {
-      s.triangles.push_back({ corners[0], corners[1], corners[2] });
-    }
-    else if (!triangulatePolygon(s.points, corners, s.triangles))
-    {
-      return failure(face + " is a polygon of " + std::to_string(n) +
-        " corners with zero area or crossing edges; it cannot be triangulated");
-    }
-    r.data.sourcePolygon.insert(r.data.sourcePolygon.end(), s.triangles.size() - before, f);
-  }
-
-  // nothing may follow: more lines mean the counts are wrong
-  if (lines.next(words))
-  {
-    return failure(at(lines.number()) +
-      "unexpected data after the last face; the file has more vertices or faces than its header says" +
-      countsHint);
-  }
-  if (lines.failedToRead())
-  {
-    return failure("reading failed after line " + std::to_string(lines.number()));
-  }
-  r.data.polygonCount = static_cast<std::size_t>(nf);
-  r.ok = true;
-  return r;
+  parser.result().ok = true;
+  return std::move(parser.result());
 }
 
 OffReadResult readOffFile(const std::string& path)

@@ -168,13 +168,61 @@ bool findPinchedPoints(const SurfaceComplex& c, int below, int above,
   error = msg.str();
   return true;
 }
-} // namespace
-
-bool splitCell(SurfaceComplex& c, int cell, const Vec3& n, double offset, int planeId, int below,
-  int above, const PlaneSplitOptions& options, PlaneSplitStats& stats, std::string& error)
+// An interface region of an earlier plane, split by the cutting plane: its
+// edges below and above the plane, its boundary points on the cutting line
+// and its boundary edges along that line.
+struct RegionPieces
 {
-  // 1. The faces of the part.
-  std::vector<std::size_t> triangles;
+  std::vector<DirectedEdge> lowerEdges, upperEdges;
+  std::vector<Index> onLine;        // boundary points of this region on the cutting line
+  std::vector<DirectedEdge> inLine; // boundary edges lying along the line
+};
+
+// One cut of part `cell` by the plane n . x = offset into `below` and
+// `above`, and what its steps share: the part's faces, the side of each of
+// its vertices, and the points the cut adds.
+struct CellSplit
+{
+  SurfaceComplex& c;
+  const int cell;
+  const Vec3& n;
+  const double offset;
+  const int planeId, below, above;
+  const PlaneSplitOptions& options;
+  PlaneSplitStats& stats;
+  std::string& error;
+  std::vector<std::size_t> triangles{}; // the part's surface triangles
+  std::vector<std::size_t> regions{};   // its interface regions
+  std::unordered_map<Index, VertexSide> vertices{};
+  // Points on the plane (on-plane vertices, crossings, chord points) bound the new interface.
+  std::unordered_map<Index, char> onPlane{};
+  std::unordered_map<std::pair<Index, Index>, Index, PairHash> crossings{};
+  std::unordered_map<Index, double> splitEdgeLength{}; // crossing point -> length of its edge
+
+  void collectFaces();
+  void classifyVertices();
+  void moveSnappedOntoPlane();
+  void markOnPlane();
+  int sideOf(Index v) const { return vertices.at(v).side; }
+  Index crossing(Index a, Index b);
+  void addTriangle(const Triangle& t, int label, Index source, std::size_t replace, bool& replaced);
+  void addPolygon(const std::vector<Index>& poly, int label, Index source, std::size_t replace, bool& replaced);
+  void splitSurfaceTriangles();
+  RegionPieces splitRegionEdges(const std::vector<DirectedEdge>& original, const Vec3& regionNormal);
+  double localSpacing(Index v) const;
+  std::vector<Index> chordChain(const InterfaceRegion& region, Index a, Index b, std::size_t boundaryEdges,
+    const Vec3& lineDirection);
+  void addChords(const InterfaceRegion& region, const std::vector<DirectedEdge>& original,
+    const Vec3& lineDirection, RegionPieces& pieces);
+  void replaceRegion(std::size_t r, RegionPieces& pieces, std::vector<InterfaceRegion>& newRegions);
+  bool splitRegions();
+  bool piecesClosed(const std::vector<InterfaceRegion>& newRegions);
+  bool addNewInterface();
+};
+
+// The faces of the part.
+void CellSplit::collectFaces()
+{
   for (std::size_t i = 0; i < c.triangles.size(); ++i)
   {
     if (c.trianglePairs[i][0] == cell && c.trianglePairs[i][1] == -1)
@@ -182,7 +230,6 @@ bool splitCell(SurfaceComplex& c, int cell, const Vec3& n, double offset, int pl
       triangles.push_back(i);
     }
   }
-  std::vector<std::size_t> regions;
   for (std::size_t r = 0; r < c.interfaces.size(); ++r)
   {
     if (c.interfaces[r].pair[0] == cell || c.interfaces[r].pair[1] == cell)
@@ -190,9 +237,11 @@ bool splitCell(SurfaceComplex& c, int cell, const Vec3& n, double offset, int pl
       regions.push_back(r);
     }
   }
+}
 
-  // 2. Vertex sides, with snapping of vertices very near the plane.
-  std::unordered_map<Index, VertexSide> vertices;
+// Vertex sides, with snapping of vertices very near the plane.
+void CellSplit::classifyVertices()
+{
   auto touchEdge = [&](Index a, Index b, bool regionEdge) {
     const double length = norm(c.points[a] - c.points[b]);
     for (Index v : { a, b })
@@ -240,84 +289,86 @@ bool splitCell(SurfaceComplex& c, int cell, const Vec3& n, double offset, int pl
       info.side = info.distance < 0 ? -1 : 1;
     }
   }
-  // A snapped vertex inside the object (on interface boundaries only, such
-  // as the points of an earlier chord) moves onto the plane along an edge of
-  // those boundaries that the plane crosses, so it stays on their planes and
-  // now lies on this one too: left where it was, it would tilt the interface
-  // triangles at it by up to a few degrees, and a subdomain surface folded
-  // that little forces TetGen into flat tetrahedra. A vertex of the input
-  // surface stays where it is (moving it would change the surface and the
-  // enclosed volume). Moves follow the distances before any move, so the
-  // order does not matter; a vertex whose edges the plane does not cross, or
-  // only far from it, stays put.
+}
+
+// A snapped vertex inside the object (on interface boundaries only, such
+// as the points of an earlier chord) moves onto the plane along an edge of
+// those boundaries that the plane crosses, so it stays on their planes and
+// now lies on this one too: left where it was, it would tilt the interface
+// triangles at it by up to a few degrees, and a subdomain surface folded
+// that little forces TetGen into flat tetrahedra. A vertex of the input
+// surface stays where it is (moving it would change the surface and the
+// enclosed volume). Moves follow the distances before any move, so the
+// order does not matter; a vertex whose edges the plane does not cross, or
+// only far from it, stays put.
+void CellSplit::moveSnappedOntoPlane()
+{
+  std::unordered_map<Index, char> onSurface;
+  for (std::size_t i : triangles)
   {
-    std::unordered_map<Index, char> onSurface;
-    for (std::size_t i : triangles)
+    for (Index v : c.triangles[i])
     {
-      for (Index v : c.triangles[i])
-      {
-        onSurface[v] = 1;
-      }
-    }
-    std::unordered_map<Index, std::map<Index, std::set<int>>> regionNeighbours; // v -> w -> planes of edge vw
-    std::unordered_map<Index, std::set<int>> planesAt;
-    for (std::size_t r : regions)
-    {
-      const int plane = c.interfaces[r].planeId;
-      for (const auto& e : c.interfaces[r].edges)
-      {
-        for (int k = 0; k < 2; ++k)
-        {
-          const Index v = e[k], w = e[1 - k];
-          const VertexSide& info = vertices.at(v);
-          if (info.side == 0 && info.distance != 0.0 && !onSurface.count(v))
-          {
-            planesAt[v].insert(plane);
-            regionNeighbours[v][w].insert(plane);
-          }
-        }
-      }
-    }
-    std::vector<std::pair<Index, Vec3>> moves;
-    for (const auto& [v, planes] : planesAt)
-    {
-      const VertexSide& info = vertices.at(v);
-      double shortestMove = 0.25 * info.shortestEdge;
-      bool found = false;
-      Vec3 target{ 0, 0, 0 };
-      for (const auto& [w, edgePlanes] : regionNeighbours[v])
-      {
-        const VertexSide& other = vertices.at(w);
-        if (edgePlanes != planes || other.side == 0 || (other.distance < 0) == (info.distance < 0))
-        {
-          continue; // not on every interface at v, or not crossed by the plane
-        }
-        const double t = info.distance / (info.distance - other.distance);
-        const Vec3 step = t * (c.points[w] - c.points[v]);
-        const double length = norm(step);
-        if (length < shortestMove)
-        {
-          shortestMove = length;
-          target = c.points[v] + step;
-          found = true;
-        }
-      }
-      if (found)
-      {
-        moves.push_back({ v, target });
-      }
-    }
-    for (const auto& [v, target] : moves)
-    {
-      c.points[v] = target;
-      vertices.at(v).distance = 0.0;
-      ++stats.movedOntoPlane;
+      onSurface[v] = 1;
     }
   }
-  auto sideOf = [&](Index v) { return vertices.at(v).side; };
+  std::unordered_map<Index, std::map<Index, std::set<int>>> regionNeighbours; // v -> w -> planes of edge vw
+  std::unordered_map<Index, std::set<int>> planesAt;
+  for (std::size_t r : regions)
+  {
+    const int plane = c.interfaces[r].planeId;
+    for (const auto& e : c.interfaces[r].edges)
+    {
+      for (int k = 0; k < 2; ++k)
+      {
+        const Index v = e[k], w = e[1 - k];
+        const VertexSide& info = vertices.at(v);
+        if (info.side == 0 && info.distance != 0.0 && !onSurface.count(v))
+        {
+          planesAt[v].insert(plane);
+          regionNeighbours[v][w].insert(plane);
+        }
+      }
+    }
+  }
+  std::vector<std::pair<Index, Vec3>> moves;
+  for (const auto& [v, planes] : planesAt)
+  {
+    const VertexSide& info = vertices.at(v);
+    double shortestMove = 0.25 * info.shortestEdge;
+    bool found = false;
+    Vec3 target{ 0, 0, 0 };
+    for (const auto& [w, edgePlanes] : regionNeighbours[v])
+    {
+      const VertexSide& other = vertices.at(w);
+      if (edgePlanes != planes || other.side == 0 || (other.distance < 0) == (info.distance < 0))
+      {
+        continue; // not on every interface at v, or not crossed by the plane
+      }
+      const double t = info.distance / (info.distance - other.distance);
+      const Vec3 step = t * (c.points[w] - c.points[v]);
+      const double length = norm(step);
+      if (length < shortestMove)
+      {
+        shortestMove = length;
+        target = c.points[v] + step;
+        found = true;
+      }
+    }
+    if (found)
+    {
+      moves.push_back({ v, target });
+    }
+  }
+  for (const auto& [v, target] : moves)
+  {
+    c.points[v] = target;
+    vertices.at(v).distance = 0.0;
+    ++stats.movedOntoPlane;
+  }
+}
 
-  // Points on the plane (on-plane vertices, crossings, chord points) bound the new interface.
-  std::unordered_map<Index, char> onPlane;
+void CellSplit::markOnPlane()
+{
   for (const auto& [v, info] : vertices)
   {
     if (info.side == 0)
@@ -325,67 +376,74 @@ bool splitCell(SurfaceComplex& c, int cell, const Vec3& n, double offset, int pl
       onPlane[v] = 1;
     }
   }
+}
 
-  std::unordered_map<std::pair<Index, Index>, Index, PairHash> crossings;
-  std::unordered_map<Index, double> splitEdgeLength; // crossing point -> length of its edge
-  auto crossing = [&](Index a, Index b) {
-    const Index lo = std::min(a, b), hi = std::max(a, b);
-    auto it = crossings.find({ lo, hi });
-    if (it != crossings.end())
-    {
-      return it->second;
-    }
-    const double dlo = vertices.at(lo).distance, dhi = vertices.at(hi).distance;
-    const double t = dlo / (dlo - dhi);
-    stats.crossingsWithin10Percent += std::min(t, 1.0 - t) < 0.1 ? 1 : 0;
-    stats.crossingsWithin1Percent += std::min(t, 1.0 - t) < 0.01 ? 1 : 0;
-    c.points.push_back(c.points[lo] + t * (c.points[hi] - c.points[lo]));
-    const Index id = static_cast<Index>(c.points.size() - 1);
-    crossings[{ lo, hi }] = id;
-    splitEdgeLength[id] = norm(c.points[hi] - c.points[lo]);
-    onPlane[id] = 1;
-    return id;
-  };
+// The point where the plane crosses edge ab, made once per edge.
+Index CellSplit::crossing(Index a, Index b)
+{
+  const Index lo = std::min(a, b), hi = std::max(a, b);
+  auto it = crossings.find({ lo, hi });
+  if (it != crossings.end())
+  {
+    return it->second;
+  }
+  const double dlo = vertices.at(lo).distance, dhi = vertices.at(hi).distance;
+  const double t = dlo / (dlo - dhi);
+  stats.crossingsWithin10Percent += std::min(t, 1.0 - t) < 0.1 ? 1 : 0;
+  stats.crossingsWithin1Percent += std::min(t, 1.0 - t) < 0.01 ? 1 : 0;
+  c.points.push_back(c.points[lo] + t * (c.points[hi] - c.points[lo]));
+  const Index id = static_cast<Index>(c.points.size() - 1);
+  crossings[{ lo, hi }] = id;
+  splitEdgeLength[id] = norm(c.points[hi] - c.points[lo]);
+  onPlane[id] = 1;
+  return id;
+}
 
-  // 3. Surface triangles.
-  auto addTriangle = [&](const Triangle& t, int label, Index source, std::size_t replace,
-                       bool& replaced) {
-    if (!replaced)
+void CellSplit::addTriangle(const Triangle& t, int label, Index source, std::size_t replace, bool& replaced)
+{
+  if (!replaced)
+  {
+    c.triangles[replace] = t;
+    c.trianglePairs[replace] = { label, -1 };
+    c.sourceFaces[replace] = source;
+    replaced = true;
+  }
+  else
+  {
+    c.triangles.push_back(t);
+    c.trianglePairs.push_back({ label, -1 });
+    c.sourceFaces.push_back(source);
+  }
+}
+
+void CellSplit::addPolygon(
+  const std::vector<Index>& poly, int label, Index source, std::size_t replace, bool& replaced)
+{
+  if (poly.size() == 3)
+  {
+    addTriangle({ poly[0], poly[1], poly[2] }, label, source, replace, replaced);
+  }
+  else if (poly.size() == 4)
+  {
+    const double d02 = norm(c.points[poly[0]] - c.points[poly[2]]);
+    const double d13 = norm(c.points[poly[1]] - c.points[poly[3]]);
+    if (d02 <= d13)
     {
-      c.triangles[replace] = t;
-      c.trianglePairs[replace] = { label, -1 };
-      c.sourceFaces[replace] = source;
-      replaced = true;
+      addTriangle({ poly[0], poly[1], poly[2] }, label, source, replace, replaced);
+      addTriangle({ poly[0], poly[2], poly[3] }, label, source, replace, replaced);
     }
     else
     {
-      c.triangles.push_back(t);
-      c.trianglePairs.push_back({ label, -1 });
-      c.sourceFaces.push_back(source);
+      addTriangle({ poly[1], poly[2], poly[3] }, label, source, replace, replaced);
+      addTriangle({ poly[1], poly[3], poly[0] }, label, source, replace, replaced);
     }
-  };
-  auto addPolygon = [&](const std::vector<Index>& poly, int label, Index source,
-                      std::size_t replace, bool& replaced) {
-    if (poly.size() == 3)
-    {
-      addTriangle({ poly[0], poly[1], poly[2] }, label, source, replace, replaced);
-    }
-    else if (poly.size() == 4)
-    {
-      const double d02 = norm(c.points[poly[0]] - c.points[poly[2]]);
-      const double d13 = norm(c.points[poly[1]] - c.points[poly[3]]);
-      if (d02 <= d13)
-      {
-        addTriangle({ poly[0], poly[1], poly[2] }, label, source, replace, replaced);
-        addTriangle({ poly[0], poly[2], poly[3] }, label, source, replace, replaced);
-      }
-      else
-      {
-        addTriangle({ poly[1], poly[2], poly[3] }, label, source, replace, replaced);
-        addTriangle({ poly[1], poly[3], poly[0] }, label, source, replace, replaced);
-      }
-    }
-  };
+  }
+}
+
+// Surface triangles: each goes to the side it lies on; one the plane
+// crosses is replaced by the triangles of its parts below and above.
+void CellSplit::splitSurfaceTriangles()
+{
   for (std::size_t i : triangles)
   {
     const Triangle t = c.triangles[i];
@@ -431,168 +489,218 @@ bool splitCell(SurfaceComplex& c, int cell, const Vec3& n, double offset, int pl
     addPolygon(lower, below, source, i, replaced);
     addPolygon(upper, above, source, i, replaced);
   }
+}
 
-  // 4. Interface regions of earlier planes.
+// The boundary edges of a region of an earlier plane, split where the plane crosses them.
+RegionPieces CellSplit::splitRegionEdges(const std::vector<DirectedEdge>& original, const Vec3& regionNormal)
+{
+  RegionPieces pieces;
+  for (const auto& e : original)
+  {
+    const int sa = sideOf(e[0]), sb = sideOf(e[1]);
+    if (sa * sb < 0)
+    {
+      const Index p = crossing(e[0], e[1]);
+      pieces.onLine.push_back(p);
+      (sa < 0 ? pieces.lowerEdges : pieces.upperEdges).push_back({ e[0], p });
+      (sb < 0 ? pieces.lowerEdges : pieces.upperEdges).push_back({ p, e[1] });
+      continue;
+    }
+    if (sa == 0)
+    {
+      pieces.onLine.push_back(e[0]);
+    }
+    if (sb == 0)
+    {
+      pieces.onLine.push_back(e[1]);
+    }
+    if (sa == 0 && sb == 0)
+    {
+      const Vec3 left = cross(regionNormal, c.points[e[1]] - c.points[e[0]]);
+      (dot(left, n) > 0 ? pieces.upperEdges : pieces.lowerEdges).push_back(e);
+      pieces.inLine.push_back(e);
+    }
+    else
+    {
+      (sa + sb > 0 ? pieces.upperEdges : pieces.lowerEdges).push_back(e);
+    }
+  }
+  return pieces;
+}
+
+double CellSplit::localSpacing(Index v) const
+{
+  auto it = vertices.find(v);
+  if (it != vertices.end() && it->second.regionEdgeCount > 0)
+  {
+    return it->second.edgeLengthSum / it->second.regionEdgeCount;
+  }
+  // a crossing point: the length of the edge it split
+  auto split = splitEdgeLength.find(v);
+  return split != splitEdgeLength.end() ? split->second : 0.0;
+}
+
+// The points of the chord from a to b, ends included, spaced as the
+// boundary around its ends.
+std::vector<Index> CellSplit::chordChain(
+  const InterfaceRegion& region, Index a, Index b, std::size_t boundaryEdges, const Vec3& lineDirection)
+{
+  const Vec3 regionNormal = c.planes[region.planeId].normal;
+  const double length = norm(c.points[b] - c.points[a]);
+  const double spacing = 0.5 * (localSpacing(a) + localSpacing(b));
+  // A chord needs no more points than the boundary it spans has edges;
+  // without this cap, ends on near-degenerate edges (a spacing of 1e-16)
+  // asked for 1e9 points and exhausted the memory.
+  const double mostSegments = static_cast<double>(std::max<std::size_t>(1, boundaryEdges));
+  const int segments = spacing > 0
+    ? static_cast<int>(std::max(1.0, std::min(std::round(length / spacing), mostSegments)))
+    : 1;
+  // the chord's points lie exactly on the line where the two planes
+  // meet (its ends may lie a snapping distance off it)
+  const Vec3 onLineOrigin =
+    pointOnBothPlanes(regionNormal, dot(regionNormal, c.planes[region.planeId].origin), n, offset);
+  const double d2 = dot(lineDirection, lineDirection);
+  const double sa = dot(c.points[a] - onLineOrigin, lineDirection) / d2;
+  const double sb = dot(c.points[b] - onLineOrigin, lineDirection) / d2;
+  std::vector<Index> chain{ a };
+  for (int j = 1; j < segments; ++j)
+  {
+    const double t = static_cast<double>(j) / segments;
+    c.points.push_back(onLineOrigin + (sa + t * (sb - sa)) * lineDirection);
+    const Index id = static_cast<Index>(c.points.size() - 1);
+    onPlane[id] = 1;
+    chain.push_back(id);
+    ++stats.chordPoints;
+  }
+  chain.push_back(b);
+  return chain;
+}
+
+// Chords: intervals of the cutting line inside the region, added to both pieces.
+void CellSplit::addChords(const InterfaceRegion& region, const std::vector<DirectedEdge>& original,
+  const Vec3& lineDirection, RegionPieces& pieces)
+{
+  const Vec3 regionNormal = c.planes[region.planeId].normal;
+  std::vector<Index>& onLine = pieces.onLine;
+  std::sort(onLine.begin(), onLine.end());
+  onLine.erase(std::unique(onLine.begin(), onLine.end()), onLine.end());
+  std::sort(onLine.begin(), onLine.end(), [&](Index a, Index b) {
+    const double ta = dot(c.points[a], lineDirection), tb = dot(c.points[b], lineDirection);
+    return ta < tb || (ta == tb && a < b);
+  });
+  Vec3 e1, e2;
+  planeBasis(regionNormal, e1, e2);
+  for (std::size_t k = 0; k + 1 < onLine.size(); ++k)
+  {
+    const Index a = onLine[k], b = onLine[k + 1];
+    bool boundary = false;
+    for (const auto& e : pieces.inLine)
+    {
+      boundary = boundary || (e[0] == a && e[1] == b) || (e[0] == b && e[1] == a);
+    }
+    if (boundary)
+    {
+      continue;
+    }
+    const Vec3 middle = 0.5 * (c.points[a] + c.points[b]);
+    if (windingNumber2D(c.points, original, e1, e2, middle) <= 0)
+    {
+      continue;
+    }
+    const std::vector<Index> chain = chordChain(region, a, b, original.size(), lineDirection);
+    // the lower piece has the region on the left of its chord edges
+    const bool forwardForLower = dot(cross(regionNormal, c.points[b] - c.points[a]), n) < 0;
+    for (std::size_t j = 0; j + 1 < chain.size(); ++j)
+    {
+      const DirectedEdge forward{ chain[j], chain[j + 1] };
+      const DirectedEdge backward{ chain[j + 1], chain[j] };
+      pieces.lowerEdges.push_back(forwardForLower ? forward : backward);
+      pieces.upperEdges.push_back(forwardForLower ? backward : forward);
+    }
+  }
+}
+
+// Region r becomes its first piece that has edges, the lower before the
+// upper; the other, if any, joins newRegions. The part's label in their
+// pair becomes below or above.
+void CellSplit::replaceRegion(std::size_t r, RegionPieces& pieces, std::vector<InterfaceRegion>& newRegions)
+{
+  const InterfaceRegion& region = c.interfaces[r];
+  auto relabel = [&](SubdomainPair pair, int to) {
+    for (int& p : pair)
+    {
+      if (p == cell)
+      {
+        p = to;
+      }
+    }
+    return pair;
+  };
+  const SubdomainPair pair = region.pair;
+  const int planeOfRegion = region.planeId;
+  bool replaced = false;
+  for (int pieceSide : { -1, 1 })
+  {
+    std::vector<DirectedEdge>& edges = pieceSide < 0 ? pieces.lowerEdges : pieces.upperEdges;
+    if (edges.empty())
+    {
+      continue;
+    }
+    InterfaceRegion piece;
+    piece.planeId = planeOfRegion;
+    piece.pair = relabel(pair, pieceSide < 0 ? below : above);
+    piece.edges = std::move(edges);
+    if (!replaced)
+    {
+      c.interfaces[r] = std::move(piece);
+      replaced = true;
+    }
+    else
+    {
+      newRegions.push_back(std::move(piece));
+    }
+  }
+}
+
+// Interface regions of earlier planes.
+bool CellSplit::splitRegions()
+{
   std::vector<InterfaceRegion> newRegions;
   for (std::size_t r : regions)
   {
-    InterfaceRegion& region = c.interfaces[r];
+    const InterfaceRegion& region = c.interfaces[r];
     const Vec3 regionNormal = c.planes[region.planeId].normal;
-    std::vector<DirectedEdge> lowerEdges, upperEdges;
-    std::vector<Index> onLine; // boundary points of this region on the cutting line
     const std::vector<DirectedEdge> original = region.edges;
-    std::vector<DirectedEdge> inLine; // boundary edges lying along the line
-    for (const auto& e : original)
-    {
-      const int sa = sideOf(e[0]), sb = sideOf(e[1]);
-      if (sa * sb < 0)
-      {
-        const Index p = crossing(e[0], e[1]);
-        onLine.push_back(p);
-        (sa < 0 ? lowerEdges : upperEdges).push_back({ e[0], p });
-        (sb < 0 ? lowerEdges : upperEdges).push_back({ p, e[1] });
-        continue;
-      }
-      if (sa == 0)
-      {
-        onLine.push_back(e[0]);
-      }
-      if (sb == 0)
-      {
-        onLine.push_back(e[1]);
-      }
-      if (sa == 0 && sb == 0)
-      {
-        const Vec3 left = cross(regionNormal, c.points[e[1]] - c.points[e[0]]);
-        (dot(left, n) > 0 ? upperEdges : lowerEdges).push_back(e);
-        inLine.push_back(e);
-      }
-      else
-      {
-        (sa + sb > 0 ? upperEdges : lowerEdges).push_back(e);
-      }
-    }
+    RegionPieces pieces = splitRegionEdges(original, regionNormal);
     const Vec3 lineDirection = cross(regionNormal, n);
-    if (!upperEdges.empty() && !lowerEdges.empty() && norm(lineDirection) > 1e-12)
+    if (!pieces.upperEdges.empty() && !pieces.lowerEdges.empty() && norm(lineDirection) > 1e-12)
     {
-      // chords: intervals of the cutting line inside the region
-      std::sort(onLine.begin(), onLine.end());
-      onLine.erase(std::unique(onLine.begin(), onLine.end()), onLine.end());
-      std::sort(onLine.begin(), onLine.end(), [&](Index a, Index b) {
-        const double ta = dot(c.points[a], lineDirection), tb = dot(c.points[b], lineDirection);
-        return ta < tb || (ta == tb && a < b);
-      });
-      Vec3 e1, e2;
-      planeBasis(regionNormal, e1, e2);
-      auto localSpacing = [&](Index v) {
-        auto it = vertices.find(v);
-        if (it != vertices.end() && it->second.regionEdgeCount > 0)
-        {
-          return it->second.edgeLengthSum / it->second.regionEdgeCount;
-        }
-        // a crossing point: the length of the edge it split
-        auto split = splitEdgeLength.find(v);
-        return split != splitEdgeLength.end() ? split->second : 0.0;
-      };
-      for (std::size_t k = 0; k + 1 < onLine.size(); ++k)
-      {
-        const Index a = onLine[k], b = onLine[k + 1];
-        bool boundary = false;
-        for (const auto& e : inLine)
-        {
-          boundary = boundary || (e[0] == a && e[1] == b) || (e[0] == b && e[1] == a);
-        }
-        if (boundary)
-        {
-          continue;
-        }
-        const Vec3 middle = 0.5 * (c.points[a] + c.points[b]);
-        if (windingNumber2D(c.points, original, e1, e2, middle) <= 0)
-        {
-          continue;
-        }
-        const double length = norm(c.points[b] - c.points[a]);
-        const double spacing = 0.5 * (localSpacing(a) + localSpacing(b));
-        // A chord needs no more points than the boundary it spans has edges;
-        // without this cap, ends on near-degenerate edges (a spacing of 1e-16)
-        // asked for 1e9 points and exhausted the memory.
-        const double mostSegments = static_cast<double>(std::max<std::size_t>(1, original.size()));
-        const int segments = spacing > 0
-          ? static_cast<int>(std::max(1.0, std::min(std::round(length / spacing), mostSegments)))
-          : 1;
-        // the chord's points lie exactly on the line where the two planes
-        // meet (its ends may lie a snapping distance off it)
-        const Vec3 onLineOrigin =
-          pointOnBothPlanes(regionNormal, dot(regionNormal, c.planes[region.planeId].origin), n, offset);
-        const double d2 = dot(lineDirection, lineDirection);
-        const double sa = dot(c.points[a] - onLineOrigin, lineDirection) / d2;
-        const double sb = dot(c.points[b] - onLineOrigin, lineDirection) / d2;
-        std::vector<Index> chain{ a };
-        for (int j = 1; j < segments; ++j)
-        {
-          const double t = static_cast<double>(j) / segments;
-          c.points.push_back(onLineOrigin + (sa + t * (sb - sa)) * lineDirection);
-          const Index id = static_cast<Index>(c.points.size() - 1);
-          onPlane[id] = 1;
-          chain.push_back(id);
-          ++stats.chordPoints;
-        }
-        chain.push_back(b);
-        // the lower piece has the region on the left of its chord edges
-        const bool forwardForLower = dot(cross(regionNormal, c.points[b] - c.points[a]), n) < 0;
-        for (std::size_t j = 0; j + 1 < chain.size(); ++j)
-        {
-          const DirectedEdge forward{ chain[j], chain[j + 1] };
-          const DirectedEdge backward{ chain[j + 1], chain[j] };
-          lowerEdges.push_back(forwardForLower ? forward : backward);
-          upperEdges.push_back(forwardForLower ? backward : forward);
-        }
-      }
+      addChords(region, original, lineDirection, pieces);
     }
-    else if (!upperEdges.empty() && !lowerEdges.empty())
+    else if (!pieces.upperEdges.empty() && !pieces.lowerEdges.empty())
     {
       error = "a cutting plane lies too close to a parallel interface";
       return false;
     }
-    auto relabel = [&](SubdomainPair pair, int to) {
-      for (int& p : pair)
-      {
-        if (p == cell)
-        {
-          p = to;
-        }
-      }
-      return pair;
-    };
-    const SubdomainPair pair = region.pair;
-    const int planeOfRegion = region.planeId;
-    bool replaced = false;
-    for (int pieceSide : { -1, 1 })
-    {
-      std::vector<DirectedEdge>& edges = pieceSide < 0 ? lowerEdges : upperEdges;
-      if (edges.empty())
-      {
-        continue;
-      }
-      InterfaceRegion piece;
-      piece.planeId = planeOfRegion;
-      piece.pair = relabel(pair, pieceSide < 0 ? below : above);
-      piece.edges = std::move(edges);
-      if (!replaced)
-      {
-        c.interfaces[r] = std::move(piece);
-        replaced = true;
-      }
-      else
-      {
-        newRegions.push_back(std::move(piece));
-      }
-    }
+    replaceRegion(r, pieces, newRegions);
   }
-  // Every piece must still be bounded by closed loops. Vertices snapped onto
-  // the plane can make a boundary run zig-zag along the cutting line, and
-  // then the edges lying in it fall to both sides; the caller retries with
-  // less snapping rather than keep a region with a hole.
+  if (!piecesClosed(newRegions))
+  {
+    return false;
+  }
+  for (auto& region : newRegions)
+  {
+    c.interfaces.push_back(std::move(region));
+  }
+  return true;
+}
+
+// Every piece must still be bounded by closed loops. Vertices snapped onto
+// the plane can make a boundary run zig-zag along the cutting line, and
+// then the edges lying in it fall to both sides; the caller retries with
+// less snapping rather than keep a region with a hole.
+bool CellSplit::piecesClosed(const std::vector<InterfaceRegion>& newRegions)
+{
   std::vector<const InterfaceRegion*> pieces;
   for (std::size_t r : regions)
   {
@@ -615,16 +723,12 @@ bool splitCell(SurfaceComplex& c, int cell, const Vec3& n, double offset, int pl
       return false;
     }
   }
-  for (auto& region : newRegions)
-  {
-    c.interfaces.push_back(std::move(region));
-  }
+  return true;
+}
 
-  // 5. Faces of other parts that share a split edge (along the boundary of an
-  // earlier interface) get the same point, so no T-junction is left.
-  insertEdgePoints(c, below, above, crossings);
-
-  // 6. The new interface: the edges left open by the faces of `below`.
+// The new interface: the edges left open by the faces of `below`.
+bool CellSplit::addNewInterface()
+{
   std::map<DirectedEdge, int> open;
   auto addEdge = [&](Index a, Index b) {
     auto it = open.find({ b, a });
@@ -687,6 +791,30 @@ bool splitCell(SurfaceComplex& c, int cell, const Vec3& n, double offset, int pl
   {
     c.interfaces.push_back(std::move(cut));
   }
-  return !findPinchedPoints(c, below, above, vertices, planeId, stats, error);
+  return true;
+}
+} // namespace
+
+bool splitCell(SurfaceComplex& c, int cell, const Vec3& n, double offset, int planeId, int below,
+  int above, const PlaneSplitOptions& options, PlaneSplitStats& stats, std::string& error)
+{
+  CellSplit split{ c, cell, n, offset, planeId, below, above, options, stats, error };
+  split.collectFaces();
+  split.classifyVertices();
+  split.moveSnappedOntoPlane();
+  split.markOnPlane();
+  split.splitSurfaceTriangles();
+  if (!split.splitRegions())
+  {
+    return false;
+  }
+  // Faces of other parts that share a split edge (along the boundary of an
+  // earlier interface) get the same point, so no T-junction is left.
+  insertEdgePoints(c, below, above, split.crossings);
+  if (!split.addNewInterface())
+  {
+    return false;
+  }
+  return !findPinchedPoints(c, below, above, split.vertices, planeId, stats, error);
 }
 } // namespace ptm

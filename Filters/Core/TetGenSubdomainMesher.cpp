@@ -412,61 +412,42 @@ void fillTetGenInput(const TriangleSurface& s, const std::vector<Index>& order,
     }
   }
 }
-} // namespace
-
-std::string describeTetGenError(int code)
+// Why TetGen must not be given this surface with these options, before
+// anything is run; empty if it may. Sets meanEdge, the mean length of the
+// triangles' edges.
+std::string inputError(const TriangleSurface& s, const TetMeshingOptions& options, double& meanEdge)
 {
-  switch (code)
-  {
-    case 1: return "out of memory";
-    case 2: return "internal error in TetGen";
-    case 3: return "the surface intersects itself";
-    case 4: return "a very small input feature was detected (smaller than TetGen's tolerance)";
-    case 5: return "two very close input facets were detected";
-    case 10: return "invalid input (TetGen rejected the surface)";
-    default: return "unknown TetGen error";
-  }
-}
-
-TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOptions& options)
-{
-  TetMeshingResult r;
   const std::size_t n = s.points.size();
   if (s.triangles.size() < 4 || n < 4)
   {
-    r.error = "the surface has fewer than 4 triangles or points";
-    return r;
+    return "the surface has fewer than 4 triangles or points";
   }
   if (!(options.radiusEdgeRatio > 1.0) || !(options.maximumVolume >= 0) ||
     !(options.minimumDihedralAngle >= 0 && options.minimumDihedralAngle < 70) ||
     !(options.timeLimitSeconds >= 0))
   {
-    r.error = "invalid options: the radius-edge ratio must exceed 1, the maximum volume and the "
-              "time limit must not be negative, the minimum dihedral angle must lie in [0, 70) "
-              "degrees";
-    return r;
+    return "invalid options: the radius-edge ratio must exceed 1, the maximum volume and the "
+           "time limit must not be negative, the minimum dihedral angle must lie in [0, 70) "
+           "degrees";
   }
   if (!options.pointSizes.empty() &&
     (options.pointSizes.size() != n ||
       !std::all_of(options.pointSizes.begin(), options.pointSizes.end(),
         [](double h) { return h > 0 && std::isfinite(h); })))
   {
-    r.error = "invalid options: the point sizes must be one positive, finite size per surface point";
-    return r;
+    return "invalid options: the point sizes must be one positive, finite size per surface point";
   }
   if (!validExtraSwitches(options.extraSwitches))
   {
-    r.error = "extra TetGen switches '" + options.extraSwitches +
+    return "extra TetGen switches '" + options.extraSwitches +
       "' refused: only O, S, T and V (with numbers) are allowed, since other switches could "
       "add points on the subdomain surface, change the numbering or skip meshing";
-    return r;
   }
   for (const auto& p : s.points)
   {
     if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
     {
-      r.error = "a surface point has a NaN or infinite coordinate";
-      return r;
+      return "a surface point has a NaN or infinite coordinate";
     }
   }
   double edgeSum = 0;
@@ -476,38 +457,41 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
     {
       if (t[k] < 0 || t[k] >= static_cast<Index>(n))
       {
-        r.error = "a triangle refers to a point that does not exist";
-        return r;
+        return "a triangle refers to a point that does not exist";
       }
       edgeSum += norm(s.points[t[(k + 1) % 3]] - s.points[t[k]]);
     }
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] ||
       !(norm(cross(s.points[t[1]] - s.points[t[0]], s.points[t[2]] - s.points[t[0]])) > 0))
     {
-      r.error = "the surface has a degenerate (zero-area) triangle";
-      return r;
+      return "the surface has a degenerate (zero-area) triangle";
     }
   }
-  const double meanEdge = edgeSum / (3.0 * s.triangles.size());
-  const double volume =
-    options.maximumVolume > 0 ? options.maximumVolume : meanEdge * meanEdge * meanEdge / (6.0 * std::sqrt(2.0));
+  meanEdge = edgeSum / (3.0 * s.triangles.size());
+  return {};
+}
 
-  // TetGen's most common failure, found first with exact predicates and named precisely
+// TetGen's most common failure, found first with exact predicates and named
+// precisely; empty if the surface does not intersect itself.
+std::string selfIntersectionError(const TriangleSurface& s)
+{
   const SelfIntersectionReport crossing = checkSelfIntersection(s);
   if (crossing.checked && crossing.intersects)
   {
-    r.tetgenCode = 3;
     const Vec3& near = s.points[s.triangles[crossing.firstTriangle][0]];
     std::ostringstream msg;
     msg << "the surface intersects itself: its triangles " << crossing.firstTriangle << " and "
         << crossing.secondTriangle << " cross near (" << near[0] << ", " << near[1] << ", "
         << near[2] << "); TetGen cannot mesh it";
-    r.error = msg.str();
-    return r;
+    return msg.str();
   }
+  return {};
+}
 
-  // cavities: shells enclosing negative volume
-  std::vector<Vec3> holes;
+// A point inside every cavity (a shell enclosing negative volume), for
+// TetGen's hole list; false if one cannot be found.
+bool cavityHoles(const TriangleSurface& s, std::vector<Vec3>& holes)
+{
   for (const auto& shell : shells(s))
   {
     double v = 0;
@@ -522,13 +506,16 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
       Vec3 hole;
       if (!holePoint(s, shell, hole))
       {
-        r.error = "could not find a point inside a cavity of the surface";
-        return r;
+        return false;
       }
       holes.push_back(hole);
     }
   }
+  return true;
+}
 
+std::string tetgenSwitches(const TetMeshingOptions& options, double volume)
+{
   std::ostringstream switches;
   switches.precision(17);
   switches << "pYzQ" << (options.pointSizes.empty() ? "" : "m");
@@ -541,22 +528,21 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
     }
   }
   switches << "a" << volume << options.extraSwitches;
-  r.switchesUsed = switches.str();
+  return switches.str();
+}
 
-  // TetGen 1.5 sometimes aborts on an assertion (insphere_s: oriB != 0,
-  // finddirection: nonconvex) or loops for ever in boundary recovery for an
-  // input it meshes when the points come in another order. So a crash, an
-  // internal error or a run over the time limit is retried with the points
-  // reversed, then shuffled (a fixed seed): still the same mesh for the same
-  // input on any rank.
-  std::vector<double> outPoints;
-  std::vector<int> outTets;
-  std::vector<Index> order(n); // input position -> surface point
-  // Limits: TetGen needs about 5 microseconds of processor time per
-  // tetrahedron here (190,000 per second); a run gets 2 s plus 30 us per
-  // expected tetrahedron (the volume estimate plus 4 per surface triangle),
-  // six times that, and the wall clock the old generous 60 s plus 10 us
-  // per tetrahedron, which only matters when the machine is swapping.
+struct TimeLimits
+{
+  double cpu = 0, wall = 0; // seconds per TetGen run
+};
+
+// Limits: TetGen needs about 5 microseconds of processor time per
+// tetrahedron here (190,000 per second); a run gets 2 s plus 30 us per
+// expected tetrahedron (the volume estimate plus 4 per surface triangle),
+// six times that, and the wall clock the old generous 60 s plus 10 us
+// per tetrahedron, which only matters when the machine is swapping.
+TimeLimits timeLimits(const TriangleSurface& s, const TetMeshingOptions& options, double volume)
+{
   double expectedVolume = 0;
   for (const auto& t : s.triangles)
   {
@@ -564,112 +550,157 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
   }
   const double expectedTets = estimateTetMesh(std::fabs(expectedVolume), volume).tetrahedra +
     4.0 * static_cast<double>(s.triangles.size());
-  const double cpuLimit = options.timeLimitSeconds > 0 ? options.timeLimitSeconds : 2.0 + 3e-5 * expectedTets;
-  const double wallLimit =
-    options.timeLimitSeconds > 0 ? options.timeLimitSeconds : 60.0 + 1e-5 * expectedTets;
-  bool meshed = false;
+  TimeLimits limits;
+  limits.cpu = options.timeLimitSeconds > 0 ? options.timeLimitSeconds : 2.0 + 3e-5 * expectedTets;
+  limits.wall = options.timeLimitSeconds > 0 ? options.timeLimitSeconds : 60.0 + 1e-5 * expectedTets;
+  return limits;
+}
+
+// The order in which attempt 0, 1 or 2 gives TetGen the n points: their
+// own, reversed, shuffled with a fixed seed.
+void pointOrder(std::size_t n, int attempt, std::vector<Index>& order)
+{
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    order[i] = static_cast<Index>(attempt == 1 ? n - 1 - i : i);
+  }
+  if (attempt == 2)
+  {
+    std::uint64_t state = 0x9E3779B97F4A7C15ull;
+    for (std::size_t i = n - 1; i > 0; --i)
+    {
+      state ^= state << 13;
+      state ^= state >> 7;
+      state ^= state << 17;
+      std::swap(order[i], order[state % (i + 1)]);
+    }
+  }
+}
+
+// What the TetGen runs of one surface gave: the mesh of the last run in its
+// input order, or why it failed.
+struct TetGenRuns
+{
+  std::vector<double> points;
+  std::vector<int> tets;
+  std::vector<Index> order; // input position -> surface point
   std::string failure;
   int status = 0, code = 0;
+  int attempts = 0;
+};
+
+// TetGen 1.5 sometimes aborts on an assertion (insphere_s: oriB != 0,
+// finddirection: nonconvex) or loops for ever in boundary recovery for an
+// input it meshes when the points come in another order. So a crash, an
+// internal error or a run over the time limit is retried with the points
+// reversed, then shuffled (a fixed seed): still the same mesh for the same
+// input on any rank.
+TetGenRuns runTetGen(const TriangleSurface& s, const TetMeshingOptions& options, const std::vector<Vec3>& holes,
+  const std::string& switches, const TimeLimits& limits)
+{
+  const std::size_t n = s.points.size();
+  TetGenRuns runs;
+  runs.order.resize(n);
+  bool meshed = false;
   for (int attempt = 0; attempt < 3 && !meshed; ++attempt)
   {
-    for (std::size_t i = 0; i < n; ++i)
-    {
-      order[i] = static_cast<Index>(attempt == 1 ? n - 1 - i : i);
-    }
-    if (attempt == 2)
-    {
-      std::uint64_t state = 0x9E3779B97F4A7C15ull;
-      for (std::size_t i = n - 1; i > 0; --i)
-      {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        std::swap(order[i], order[state % (i + 1)]);
-      }
-    }
+    pointOrder(n, attempt, runs.order);
     std::vector<int> position(n);
     for (std::size_t i = 0; i < n; ++i)
     {
-      position[order[i]] = static_cast<int>(i);
+      position[runs.order[i]] = static_cast<int>(i);
     }
     tetgenio in;
-    fillTetGenInput(s, order, position, holes, options.pointSizes, in);
-    outPoints.clear();
-    outTets.clear();
-    failure.clear();
-    status = code = 0;
+    fillTetGenInput(s, runs.order, position, holes, options.pointSizes, in);
+    runs.points.clear();
+    runs.tets.clear();
+    runs.failure.clear();
+    runs.status = runs.code = 0;
     bool timedOut = false;
-    const bool ran =
-      runTetGenIsolated(in, r.switchesUsed, cpuLimit, wallLimit, outPoints, outTets, status, code, timedOut, failure);
-    meshed = ran && status == 0;
-    r.attempts = attempt + 1;
-    const bool retry = !ran || (status == 1 && code == 2);
+    const bool ran = runTetGenIsolated(in, switches, limits.cpu, limits.wall, runs.points, runs.tets, runs.status,
+      runs.code, timedOut, runs.failure);
+    meshed = ran && runs.status == 0;
+    runs.attempts = attempt + 1;
+    const bool retry = !ran || (runs.status == 1 && runs.code == 2);
     if (!retry)
     {
       break;
     }
   }
-  if (!failure.empty())
-  {
-    r.tetgenCode = code;
-    r.error = failure + (r.attempts > 1 ? " (also with the points in " + std::to_string(r.attempts - 1) +
-                                              " other orders)"
-                                        : "");
-    return r;
-  }
-  if (status == 1)
-  {
-    r.tetgenCode = code;
-    r.error = "TetGen failed with code " + std::to_string(code) + ": " + describeTetGenError(code);
-    return r;
-  }
-  if (status == 2)
-  {
-    r.tetgenCode = 1;
-    r.error = "TetGen ran out of memory";
-    return r;
-  }
-  if (status == 3)
-  {
-    r.error = "TetGen did not accept the switches '" + r.switchesUsed + "'";
-    return r;
-  }
-  // back to the surface's own order: input position k is surface point order[k]
-  if (r.attempts > 1)
-  {
-    std::vector<double> surfaceFirst(outPoints);
-    for (std::size_t k = 0; k < n && 3 * k + 2 < outPoints.size(); ++k)
-    {
-      std::copy_n(&outPoints[3 * k], 3, &surfaceFirst[3 * order[k]]);
-    }
-    outPoints.swap(surfaceFirst);
-    for (int& v : outTets)
-    {
-      if (v >= 0 && static_cast<std::size_t>(v) < n)
-      {
-        v = static_cast<int>(order[v]);
-      }
-    }
-  }
-  const int outPointCount = static_cast<int>(outPoints.size() / 3);
-  const int outTetCount = static_cast<int>(outTets.size() / 4);
+  return runs;
+}
 
-  // Check and convert the result.
-  if (outPointCount < static_cast<int>(n))
+// Why the runs gave no mesh, and TetGen's code for it; empty if they gave one.
+std::string runsError(const TetGenRuns& runs, const std::string& switches, int& tetgenCode)
+{
+  if (!runs.failure.empty())
   {
-    r.error = "TetGen returned fewer points than the surface has";
-    return r;
+    tetgenCode = runs.code;
+    return runs.failure + (runs.attempts > 1 ? " (also with the points in " + std::to_string(runs.attempts - 1) +
+                                                 " other orders)"
+                                             : "");
+  }
+  if (runs.status == 1)
+  {
+    tetgenCode = runs.code;
+    return "TetGen failed with code " + std::to_string(runs.code) + ": " + describeTetGenError(runs.code);
+  }
+  if (runs.status == 2)
+  {
+    tetgenCode = 1;
+    return "TetGen ran out of memory";
+  }
+  if (runs.status == 3)
+  {
+    return "TetGen did not accept the switches '" + switches + "'";
+  }
+  return {};
+}
+
+// Back to the surface's own order: input position k is surface point order[k].
+void restoreSurfaceOrder(TetGenRuns& runs, std::size_t n)
+{
+  std::vector<double> surfaceFirst(runs.points);
+  for (std::size_t k = 0; k < n && 3 * k + 2 < runs.points.size(); ++k)
+  {
+    std::copy_n(&runs.points[3 * k], 3, &surfaceFirst[3 * runs.order[k]]);
+  }
+  runs.points.swap(surfaceFirst);
+  for (int& v : runs.tets)
+  {
+    if (v >= 0 && static_cast<std::size_t>(v) < n)
+    {
+      v = static_cast<int>(runs.order[v]);
+    }
+  }
+}
+
+// Whether TetGen kept every surface point where it was, first in its output.
+std::string surfacePointsError(const TriangleSurface& s, const std::vector<double>& outPoints)
+{
+  const std::size_t n = s.points.size();
+  if (static_cast<int>(outPoints.size() / 3) < static_cast<int>(n))
+  {
+    return "TetGen returned fewer points than the surface has";
   }
   for (std::size_t i = 0; i < n; ++i)
   {
     if (std::memcmp(&outPoints[3 * i], s.points[i].data(), 3 * sizeof(double)) != 0)
     {
-      r.error = "TetGen moved or reordered surface point " + std::to_string(i) +
+      return "TetGen moved or reordered surface point " + std::to_string(i) +
         " (the surface may have duplicate points)";
-      return r;
     }
   }
-  TetMesh& mesh = r.mesh;
+  return {};
+}
+
+// The mesh of TetGen's output, every tetrahedron positively oriented; returns
+// the faces of all tetrahedra, each with its corners sorted.
+std::vector<std::array<Index, 3>> convertMesh(
+  const std::vector<double>& outPoints, const std::vector<int>& outTets, TetMesh& mesh)
+{
+  const int outPointCount = static_cast<int>(outPoints.size() / 3);
+  const int outTetCount = static_cast<int>(outTets.size() / 4);
   mesh.points.resize(static_cast<std::size_t>(outPointCount));
   for (int i = 0; i < outPointCount; ++i)
   {
@@ -699,7 +730,12 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
       faces.push_back(key);
     }
   }
-  // faces used by one tetrahedron only must be exactly the input triangles
+  return faces;
+}
+
+// Faces used by one tetrahedron only must be exactly the input triangles.
+std::string boundaryError(const TriangleSurface& s, std::vector<std::array<Index, 3>>& faces)
+{
   std::sort(faces.begin(), faces.end());
   std::vector<std::array<Index, 3>> boundary;
   for (std::size_t i = 0; i < faces.size();)
@@ -725,8 +761,71 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
   std::sort(input.begin(), input.end());
   if (boundary != input)
   {
-    r.error = "TetGen's mesh boundary differs from the input surface (" + std::to_string(boundary.size()) +
+    return "TetGen's mesh boundary differs from the input surface (" + std::to_string(boundary.size()) +
       " boundary faces for " + std::to_string(input.size()) + " input triangles)";
+  }
+  return {};
+}
+} // namespace
+
+std::string describeTetGenError(int code)
+{
+  switch (code)
+  {
+    case 1: return "out of memory";
+    case 2: return "internal error in TetGen";
+    case 3: return "the surface intersects itself";
+    case 4: return "a very small input feature was detected (smaller than TetGen's tolerance)";
+    case 5: return "two very close input facets were detected";
+    case 10: return "invalid input (TetGen rejected the surface)";
+    default: return "unknown TetGen error";
+  }
+}
+
+TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOptions& options)
+{
+  TetMeshingResult r;
+  double meanEdge = 0;
+  r.error = inputError(s, options, meanEdge);
+  if (!r.error.empty())
+  {
+    return r;
+  }
+  const double volume =
+    options.maximumVolume > 0 ? options.maximumVolume : meanEdge * meanEdge * meanEdge / (6.0 * std::sqrt(2.0));
+  r.error = selfIntersectionError(s);
+  if (!r.error.empty())
+  {
+    r.tetgenCode = 3;
+    return r;
+  }
+  std::vector<Vec3> holes;
+  if (!cavityHoles(s, holes))
+  {
+    r.error = "could not find a point inside a cavity of the surface";
+    return r;
+  }
+  r.switchesUsed = tetgenSwitches(options, volume);
+  TetGenRuns runs = runTetGen(s, options, holes, r.switchesUsed, timeLimits(s, options, volume));
+  r.attempts = runs.attempts;
+  r.error = runsError(runs, r.switchesUsed, r.tetgenCode);
+  if (!r.error.empty())
+  {
+    return r;
+  }
+  if (r.attempts > 1)
+  {
+    restoreSurfaceOrder(runs, s.points.size());
+  }
+  r.error = surfacePointsError(s, runs.points);
+  if (!r.error.empty())
+  {
+    return r;
+  }
+  std::vector<std::array<Index, 3>> faces = convertMesh(runs.points, runs.tets, r.mesh);
+  r.error = boundaryError(s, faces);
+  if (!r.error.empty())
+  {
     return r;
   }
   r.ok = true;

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <map>
 #include <set>
@@ -797,30 +796,39 @@ bool PartCut::run(const Vec3& proposedNormal, std::string& error)
   result.splitStats.crossingsWithin1Percent += best.stats.crossingsWithin1Percent;
   return true;
 }
-} // namespace
 
-DecompositionResult decomposeVolumeBalanced(
-  const TriangleSurface& input, const DecompositionOptions& options)
+// Whether the cuts balance predicted cost: BalanceCriterion::PredictedCost
+// with a size field (without one the cost is the volume's: cut and
+// measured as Volume).
+bool cutsByCost(const DecompositionOptions& options)
 {
-  DecompositionResult result;
-  const int K = options.numberOfSubdomains;
-  result.error = optionError(options);
-  if (!result.error.empty())
-  {
-    return result;
-  }
+  return options.criterion == BalanceCriterion::PredictedCost && static_cast<bool>(options.costSize);
+}
+
+// The field whose cost is balanced: no larger than the mesher's largest size.
+SizeFunction costField(const DecompositionOptions& options, const DecompositionResult& result)
+{
+  return cappedSize(
+    options.costSize, options.costMaximumSize > 0 ? options.costMaximumSize : result.inputMeanEdgeLength);
+}
+
+// The complex of the whole checked surface, all of it part 0; false (with
+// the input check's error in result) if the check refused the surface.
+bool startComplex(const TriangleSurface& input, const DecompositionOptions& options, DecompositionResult& result,
+  double& totalVolume)
+{
   PreparedSurface prepared = prepareInputSurface(input, options.inputCheck);
   result.inputCheck = prepared.counts;
   result.warnings = prepared.warnings;
   if (!prepared.ok)
   {
     result.error = prepared.error;
-    return result;
+    return false;
   }
   result.orientation = prepared.orientation;
   const TriangleSurface& surface = prepared.surface;
   const std::vector<Index>& source = prepared.sourceOfTriangle;
-  const double totalVolume = prepared.enclosedVolume;
+  totalVolume = prepared.enclosedVolume;
   result.totalVolume = totalVolume;
   result.inputMeanEdgeLength = meanEdgeLength(surface);
 
@@ -829,93 +837,97 @@ DecompositionResult decomposeVolumeBalanced(
   c.triangles = surface.triangles;
   c.trianglePairs.assign(c.triangles.size(), SubdomainPair{ 0, -1 });
   c.sourceFaces = source;
+  return true;
+}
 
-  const double solveTolerance = std::min(1e-6, 0.01 * options.balanceTolerance);
+// The cuts of the decomposition. Parts are numbered as they are made (the
+// whole object is part 0, every cut makes two new ones); leaves lists the
+// final parts in subdomain order.
+struct Cutting
+{
+  SurfaceComplex& c;
+  const DecompositionOptions& options;
+  DecompositionResult& result;
+  const double solveTolerance;
   int nextCell = 1;
-  std::vector<int> leaves; // cell ids in subdomain order
-  std::string error;
+  std::vector<int> leaves{}; // cell ids in subdomain order
+  std::string error{};
 
-  // cutting by cost: each part is cut by volume at the volume fraction
-  // that splits its cost samples as wanted, and the samples follow the cuts
-  // (without a field the cost is the volume's: cut and measured as Volume)
-  const bool byCost = options.criterion == BalanceCriterion::PredictedCost && options.costSize;
-  const double costCap = options.costMaximumSize > 0 ? options.costMaximumSize : result.inputMeanEdgeLength;
-  CostSamples costSamples = byCost
-    ? sampleCost(surface, cappedSize(options.costSize, costCap), options.costSamples)
-    : CostSamples{};
-  auto cut = [&](int cell, const Vec3& proposedNormal, double fraction, int parts, int& below,
-               int& above) -> bool {
-    below = nextCell++;
-    above = nextCell++;
-    DecompositionOptions partOptions = options;
-    if (byCost)
-    {
-      // the balance tolerance is of cost; in volume it is smaller where the
-      // cost is denser than the part's mean
-      const double costFraction = fraction;
-      fraction = volumeFractionForCost(costSamples, c, cell, proposedNormal, fraction);
-      partOptions.balanceTolerance *=
-        std::min({ 1.0, fraction / costFraction, (1.0 - fraction) / (1.0 - costFraction) });
-    }
-    PartCut part(c, partOptions, result, cell, fraction, parts, below, above, solveTolerance);
-    if (!part.run(proposedNormal, error))
+  CostSamples costSamples{}; // cutting by cost: the samples, following the cuts
+
+  bool cut(int cell, const Vec3& proposedNormal, double fraction, int parts, int& below, int& above);
+  bool parallelPlanes(int K);
+  bool bisect(int cell, int k);
+};
+
+// Cutting by cost: each part is cut by volume at the volume fraction that
+// splits its cost samples as wanted, with the balance tolerance (of cost)
+// made smaller in volume where the cost is denser than the part's mean;
+// the samples follow the cuts.
+bool Cutting::cut(int cell, const Vec3& proposedNormal, double fraction, int parts, int& below, int& above)
+{
+  below = nextCell++;
+  above = nextCell++;
+  DecompositionOptions partOptions = options;
+  if (cutsByCost(options))
+  {
+    const double costFraction = fraction;
+    fraction = volumeFractionForCost(costSamples, c, cell, proposedNormal, fraction);
+    partOptions.balanceTolerance *=
+      std::min({ 1.0, fraction / costFraction, (1.0 - fraction) / (1.0 - costFraction) });
+  }
+  PartCut part(c, partOptions, result, cell, fraction, parts, below, above, solveTolerance);
+  if (!part.run(proposedNormal, error))
+  {
+    return false;
+  }
+  const CuttingPlane& plane = c.planes.back();
+  moveSamples(costSamples, cell, plane.normal, dot(plane.normal, plane.origin), below, above);
+  return true;
+}
+
+// One direction for all planes; each plane cuts the rest of the object so
+// that the slab below gets 1/(number of subdomains still to make) of it.
+bool Cutting::parallelPlanes(int K)
+{
+  const Vec3 normal = cutNormal(c.points, cellPoints(c, 0), options.direction);
+  int rest = 0;
+  for (int i = 0; i < K - 1; ++i)
+  {
+    int below = 0, above = 0;
+    if (!cut(rest, normal, 1.0 / (K - i), K - i, below, above))
     {
       return false;
     }
-    const CuttingPlane& plane = c.planes.back();
-    moveSamples(costSamples, cell, plane.normal, dot(plane.normal, plane.origin), below, above);
+    leaves.push_back(below);
+    rest = above;
+  }
+  leaves.push_back(rest);
+  return true;
+}
+
+// Cuts part `cell` into k subdomains: its lower half k / 2, its upper half the rest.
+bool Cutting::bisect(int cell, int k)
+{
+  if (k == 1)
+  {
+    leaves.push_back(cell);
     return true;
-  };
+  }
+  const Vec3 normal = cutNormal(c.points, cellPoints(c, cell), options.direction);
+  const int lowerCount = k / 2;
+  int below = 0, above = 0;
+  if (!cut(cell, normal, static_cast<double>(lowerCount) / k, k, below, above))
+  {
+    return false;
+  }
+  return bisect(below, lowerCount) && bisect(above, k - lowerCount);
+}
 
-  if (K > 1 && options.strategy == CutStrategy::ParallelPlanes)
-  {
-    // one direction for all planes; each plane cuts the rest of the object so
-    // that the slab below gets 1/(number of subdomains still to make) of it
-    const Vec3 normal = cutNormal(c.points, cellPoints(c, 0), options.direction);
-    int rest = 0;
-    for (int i = 0; i < K - 1; ++i)
-    {
-      int below = 0, above = 0;
-      if (!cut(rest, normal, 1.0 / (K - i), K - i, below, above))
-      {
-        result.error = error;
-        return result;
-      }
-      leaves.push_back(below);
-      rest = above;
-    }
-    leaves.push_back(rest);
-  }
-  else if (K > 1)
-  {
-    std::function<bool(int, int)> bisect = [&](int cell, int k) -> bool {
-      if (k == 1)
-      {
-        leaves.push_back(cell);
-        return true;
-      }
-      const Vec3 normal = cutNormal(c.points, cellPoints(c, cell), options.direction);
-      const int lowerCount = k / 2;
-      int below = 0, above = 0;
-      if (!cut(cell, normal, static_cast<double>(lowerCount) / k, k, below, above))
-      {
-        return false;
-      }
-      return bisect(below, lowerCount) && bisect(above, k - lowerCount);
-    };
-    if (!bisect(0, K))
-    {
-      result.error = error;
-      return result;
-    }
-  }
-  else
-  {
-    leaves.push_back(0);
-  }
-
-  // Renumber parts to subdomains 0..K-1.
-  std::vector<int> subdomainOfCell(nextCell, -1);
+// Renumbers the parts to subdomains 0..K-1.
+void renumberParts(SurfaceComplex& c, const std::vector<int>& leaves, int cellCount, int K)
+{
+  std::vector<int> subdomainOfCell(cellCount, -1);
   for (int s = 0; s < K; ++s)
   {
     subdomainOfCell[leaves[s]] = s;
@@ -931,8 +943,12 @@ DecompositionResult decomposeVolumeBalanced(
     std::sort(region.edges.begin(), region.edges.end());
   }
   c.subdomainCount = K;
-  // The contract of the complex: every interface is bounded by closed loops
-  // (splitCell checks each piece; this guards the whole result).
+}
+
+// The contract of the complex: every interface is bounded by closed loops
+// (splitCell checks each piece; this guards the whole result).
+std::string openInterfaceError(const SurfaceComplex& c)
+{
   for (const InterfaceRegion& region : c.interfaces)
   {
     std::vector<std::vector<Index>> loops;
@@ -941,11 +957,19 @@ DecompositionResult decomposeVolumeBalanced(
       std::ostringstream msg;
       msg << "internal: the interface between subdomains " << region.pair[0] << " and "
           << region.pair[1] << " on plane " << region.planeId << " is not bounded by closed loops";
-      result.error = msg.str();
-      return result;
+      return msg.str();
     }
   }
+  return {};
+}
 
+// The volume and measure of every subdomain and the worst imbalance; the
+// error if the volumes do not add up to the input's or a subdomain
+// encloses none.
+std::string measureBalance(
+  const SurfaceComplex& c, const DecompositionOptions& options, double totalVolume, DecompositionResult& result)
+{
+  const int K = options.numberOfSubdomains;
   result.subdomainVolume = subdomainVolumes(c);
   double enclosed = 0;
   for (double v : result.subdomainVolume)
@@ -958,14 +982,13 @@ DecompositionResult decomposeVolumeBalanced(
     msg.precision(9);
     msg << "internal: the subdomains enclose " << enclosed << " in all, the input " << totalVolume
         << " (the cuts overlap); try another number of subdomains or strategy, or SnapFraction 0";
-    result.error = msg.str();
-    return result;
+    return msg.str();
   }
   // by cost: the field's regular tetrahedra by quadrature on the final
   // subdomains, more exact than the samples (whose grid columns go whole
   // to one side of a plane)
-  result.subdomainMeasure = byCost
-    ? predictCost(c, cappedSize(options.costSize, costCap)).regularTetrahedra
+  result.subdomainMeasure = cutsByCost(options)
+    ? predictCost(c, costField(options, result)).regularTetrahedra
     : measureSubdomains(c,
         options.criterion == BalanceCriterion::PredictedCost ? BalanceCriterion::Volume : options.criterion,
         result.subdomainVolume);
@@ -983,9 +1006,64 @@ DecompositionResult decomposeVolumeBalanced(
     {
       std::ostringstream msg;
       msg << "subdomain " << s << " encloses no volume";
-      result.error = msg.str();
+      return msg.str();
+    }
+  }
+  return {};
+}
+} // namespace
+
+DecompositionResult decomposeVolumeBalanced(
+  const TriangleSurface& input, const DecompositionOptions& options)
+{
+  DecompositionResult result;
+  const int K = options.numberOfSubdomains;
+  result.error = optionError(options);
+  if (!result.error.empty())
+  {
+    return result;
+  }
+  double totalVolume = 0;
+  if (!startComplex(input, options, result, totalVolume))
+  {
+    return result;
+  }
+  SurfaceComplex& c = result.complex;
+  Cutting cutting{ c, options, result, std::min(1e-6, 0.01 * options.balanceTolerance) };
+  if (cutsByCost(options))
+  {
+    cutting.costSamples = sampleCost(TriangleSurface{ c.points, c.triangles }, costField(options, result),
+      options.costSamples);
+  }
+  if (K > 1 && options.strategy == CutStrategy::ParallelPlanes)
+  {
+    if (!cutting.parallelPlanes(K))
+    {
+      result.error = cutting.error;
       return result;
     }
+  }
+  else if (K > 1)
+  {
+    if (!cutting.bisect(0, K))
+    {
+      result.error = cutting.error;
+      return result;
+    }
+  }
+  else
+  {
+    cutting.leaves.push_back(0);
+  }
+  renumberParts(c, cutting.leaves, cutting.nextCell, K);
+  result.error = openInterfaceError(c);
+  if (result.error.empty())
+  {
+    result.error = measureBalance(c, options, totalVolume, result);
+  }
+  if (!result.error.empty())
+  {
+    return result;
   }
   if (result.maximumImbalance > options.balanceTolerance)
   {
@@ -993,7 +1071,7 @@ DecompositionResult decomposeVolumeBalanced(
     msg << "balance tolerance " << options.balanceTolerance
         << " not reached: the worst subdomain deviates by " << result.maximumImbalance
         << " from its target "
-        << (byCost ? "by predicted cost (the planes were placed by an estimate on a grid of samples; "
+        << (cutsByCost(options) ? "by predicted cost (the planes were placed by an estimate on a grid of samples; "
                      "more subdomains than ranks even the ranks out)"
                    : "(the surface is too coarse near a plane for this tolerance)");
     result.warnings.push_back(msg.str());
