@@ -516,6 +516,22 @@ int vtkParallelTetMesher::RequestInformation(
   return 1;
 }
 
+std::string vtkParallelTetMesher::PropertyError()
+{
+  ptm::PropertyChecks checks("ParallelTetMesher");
+  checks.Require(this->RadiusEdgeRatio >= 1.0 && this->RadiusEdgeRatio <= 100.0,
+    "RadiusEdgeRatio", "lie in [1, 100]", this->RadiusEdgeRatio);
+  checks.Require(this->MaximumVolume >= 0.0 && std::isfinite(this->MaximumVolume),
+    "MaximumVolume", "be 0 (automatic) or a positive volume", this->MaximumVolume);
+  checks.Require(this->MinimumDihedralAngle >= 0.0 && this->MinimumDihedralAngle <= 30.0,
+    "MinimumDihedralAngle", "lie in [0, 30] degrees", this->MinimumDihedralAngle);
+  checks.Require(this->CoplanarTolerance >= 0.0 && this->CoplanarTolerance <= 10.0,
+    "CoplanarTolerance", "lie in [0, 10] degrees", this->CoplanarTolerance);
+  checks.Require(this->BoundaryMinimumAngle > 0.0 && this->BoundaryMinimumAngle <= 34.0,
+    "BoundaryMinimumAngle", "lie in (0, 34] degrees", this->BoundaryMinimumAngle);
+  return checks.Ok() ? "" : checks.Message();
+}
+
 int vtkParallelTetMesher::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -535,20 +551,10 @@ int vtkParallelTetMesher::RequestData(
 
   this->UpdateProgress(0.0);
   // nonsense property values (the same on every rank, so every rank stops)
-  ptm::PropertyChecks checks("ParallelTetMesher");
-  checks.Require(this->RadiusEdgeRatio >= 1.0 && this->RadiusEdgeRatio <= 100.0,
-    "RadiusEdgeRatio", "lie in [1, 100]", this->RadiusEdgeRatio);
-  checks.Require(this->MaximumVolume >= 0.0 && std::isfinite(this->MaximumVolume),
-    "MaximumVolume", "be 0 (automatic) or a positive volume", this->MaximumVolume);
-  checks.Require(this->MinimumDihedralAngle >= 0.0 && this->MinimumDihedralAngle <= 30.0,
-    "MinimumDihedralAngle", "lie in [0, 30] degrees", this->MinimumDihedralAngle);
-  checks.Require(this->CoplanarTolerance >= 0.0 && this->CoplanarTolerance <= 10.0,
-    "CoplanarTolerance", "lie in [0, 10] degrees", this->CoplanarTolerance);
-  checks.Require(this->BoundaryMinimumAngle > 0.0 && this->BoundaryMinimumAngle <= 34.0,
-    "BoundaryMinimumAngle", "lie in (0, 34] degrees", this->BoundaryMinimumAngle);
-  if (!checks.Ok())
+  const std::string propertyError = this->PropertyError();
+  if (!propertyError.empty())
   {
-    vtkErrorMacro(<< checks.Message());
+    vtkErrorMacro(<< propertyError);
     output->Initialize();
     boundary->Initialize();
     return 0;

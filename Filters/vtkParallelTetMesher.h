@@ -120,6 +120,8 @@ protected:
   ~vtkParallelTetMesher() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  // The message naming the first nonsense property value; empty when all are fine.
+  std::string PropertyError();
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
