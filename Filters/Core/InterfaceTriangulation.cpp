@@ -945,8 +945,11 @@ InterfaceTriangulationResult triangulateInterface(
   // triangle moves, within its star, to where the worst angle of its
   // triangles is largest; then unconstrained edges are flipped where that
   // raises the smaller angle of the pair. Boundary points never move.
-  smoothBadTriangles(mesher.cdt, mesher.n, mesher.bound, mesher.sizeFactor);
-  mesher.refinePoorAwayFromBoundary();
+  if (options.smooth)
+  {
+    smoothBadTriangles(mesher.cdt, mesher.n, mesher.bound, mesher.sizeFactor);
+    mesher.refinePoorAwayFromBoundary();
+  }
   mesher.writeOutput(result.triangulation);
   result.ok = true;
   return result;

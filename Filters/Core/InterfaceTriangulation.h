@@ -45,6 +45,10 @@ struct InterfaceTriangulationOptions
   double minimumAngleDegrees = 20.7; // (0, 34]
   double maximumEdgeLength = 0.0;    // 0: sizing from the boundary spacing, graded inward
   bool refine = true;                // false: only check the boundary (every error below), no triangles
+  // false: no smoothing after the refinement (nor the refinement that
+  // follows it): for the cutter's self-intersection check, which needs a
+  // triangulation covering the region, not its best shape
+  bool smooth = true;
   // Points no segment uses: false drops them (an interface has none); true
   // keeps them as fixed vertices, which must lie strictly inside the region
   // (the input vertices inside a planar facet of the boundary refinement).

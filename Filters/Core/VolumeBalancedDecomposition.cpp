@@ -232,6 +232,11 @@ bool partCrossesItself(const SurfaceComplex& c, int cell, const Box& cutBox)
   InterfaceTriangulationOptions cover;
   cover.minimumAngleDegrees = 1.0;
   cover.maximumEdgeLength = std::numeric_limits<double>::max();
+  // the regions near the cut as the triangulator refines them, unsmoothed:
+  // smoothing took a third of the cutter's time (ball of 41,000 triangles,
+  // K = 16: 10.5 s)
+  InterfaceTriangulationOptions nearOptions;
+  nearOptions.smooth = false;
   TriangleSurface part;
   std::vector<Index> near;
   std::unordered_map<Index, Index> local;
@@ -265,7 +270,7 @@ bool partCrossesItself(const SurfaceComplex& c, int cell, const Box& cutBox)
     const InterfaceRegion& region = *regions[k];
     const std::vector<Index>& points = regionPointLists[k];
     const InterfaceTriangulationResult r = triangulateInterface(
-      planarRegionOf(c, region, points), regionNear[k] ? InterfaceTriangulationOptions() : cover);
+      planarRegionOf(c, region, points), regionNear[k] ? nearOptions : cover);
     if (!r.ok)
     {
       return true;
