@@ -2,7 +2,7 @@
 and per phase, and the wall time it predicts on P cores (issue #19).
 
     /usr/bin/python3 Testing/Benchmarks/scaling.py [--ranks 1,2,4,8,16,32,64]
-        [--strong 2e6] [--weak 2.5e5] [--out out/scaling]
+        [--strong 2e6] [--weak 2.5e5] [--weak-ranks 1,2,4,8,16] [--out out/scaling]
 
 This machine has 2 cores, so P > 2 runs oversubscribed and its wall time
 means nothing. Instead every rank logs its processor time between the
@@ -46,7 +46,9 @@ def parse_arguments(argv):
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     p.add_argument("--ranks", default="1,2,4,8,16,32,64")
     p.add_argument("--strong", type=float, default=2e6, help="tetrahedra of the strong-scaling ball")
-    p.add_argument("--weak", type=float, default=2.5e5, help="tetrahedra per rank of the weak-scaling ball")
+    p.add_argument("--weak", type=float, default=2.5e5,
+                   help="tetrahedra per rank of the weak-scaling ball (0: no weak scaling)")
+    p.add_argument("--weak-ranks", default=None, help="rank counts of the weak scaling (default: --ranks)")
     p.add_argument("--build", default=os.path.join(ROOT, "build"))
     p.add_argument("--out", default=os.path.join(ROOT, "out", "scaling"))
     p.add_argument("--latency", type=float, default=5e-6, help="seconds per message hop (default 5 us)")
@@ -179,8 +181,10 @@ def main(argv):
 
     strong = ball(int(args.strong))
     results = {"strong": measure(lambda P: strong, ranks, args, plugin, lambda P: serial(strong), "strong")}
-    results["weak"] = measure(lambda P: ball(int(args.weak * P)), ranks, args, plugin,
-                              lambda P: serial(ball(int(args.weak * P))), "weak")
+    if args.weak > 0:
+        weak_ranks = [int(r) for r in (args.weak_ranks or args.ranks).split(",")]
+        results["weak"] = measure(lambda P: ball(int(args.weak * P)), weak_ranks, args, plugin,
+                                  lambda P: serial(ball(int(args.weak * P))), "weak")
     with open(os.path.join(args.out, "scaling.json"), "w") as f:
         json.dump({"latency": args.latency, "bandwidth": args.bandwidth,
                    "results": {tag: [{k: v for k, v in r.items()} for r in rows] for tag, rows in results.items()}},
