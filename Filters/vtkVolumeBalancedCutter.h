@@ -119,9 +119,8 @@ public:
   /// ParallelTetMesher. Empty (default): the subdomains go to the ranks by
   /// their balance measure. Set: by the tetrahedra the field predicts in
   /// each (the field data SubdomainPredictedTetrahedra), so a rank meshing
-  /// a finely sized region gets fewer subdomains. The cuts still balance
-  /// the BalanceCriterion; over-decompose (K several times the ranks) so
-  /// there is something to share out.
+  /// a finely sized region gets fewer subdomains; with BalanceCriterion
+  /// PredictedCost the cuts balance that cost too.
   vtkSetMacro(SizeExpression, std::string);
   vtkGetMacro(SizeExpression, std::string);
   ///@}
