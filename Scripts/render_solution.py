@@ -5,13 +5,14 @@ displacement and coloured by von Mises stress, with the undeformed outline.
 
 (on a machine without a display put `xvfb-run -a` in front). SCALE multiplies
 the displacement (default: the largest displacement becomes 15% of the body's size)."""
+import os
 import sys
 
-from paraview.simple import (ColorBy, GetActiveViewOrCreate, GetColorTransferFunction, Render,
-                             SaveScreenshot, Show, WarpByVector, XMLPartitionedUnstructuredGridReader,
-                             Clip, Outline, servermanager)
-from vtk.numpy_interface import dataset_adapter as dsa
-import numpy as np
+from paraview.simple import (GetActiveViewOrCreate, Render, SaveScreenshot, Show, WarpByVector,
+                             XMLPartitionedUnstructuredGridReader, Clip, Outline)
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from solution_view import colour_by_von_mises  # noqa: E402
 
 if len(sys.argv) < 3:
     sys.exit(__doc__)
@@ -33,15 +34,7 @@ clip.ClipType.Origin = [0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds
 clip.ClipType.Normal = [0, 1, 0]
 clip.Invert = 0  # keep y > centre: the cut face looks at the camera
 display = Show(clip, view)
-ColorBy(display, ("CELLS", "VonMises"))
-lut = GetColorTransferFunction("VonMises")
-lut.ApplyPreset("Turbo", True)
-# colour range to the 99th percentile: a few sliver or support-edge
-# tetrahedra carry peaks that would otherwise leave the rest one colour
-vm = dsa.WrapDataObject(servermanager.Fetch(reader)).CellData["VonMises"]
-vm = np.concatenate([np.asarray(a) for a in vm.Arrays]) if hasattr(vm, "Arrays") else np.asarray(vm)
-lut.RescaleTransferFunction(0.0, float(np.percentile(vm, 99)))
-display.SetScalarBarVisibility(view, True)
+colour_by_von_mises(reader, display, view)
 Show(Outline(Input=reader), view)
 view.CameraPosition = [bounds[1] + 2.2 * size, bounds[2] - 2.0 * size, bounds[5] + 1.0 * size]
 view.CameraFocalPoint = [0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5])]

@@ -7,12 +7,9 @@ The pipeline is built with paraview.simple in the GUI's own session, so it
 appears in the Pipeline Browser like one made with the mouse."""
 import os
 
-import numpy as np
-from paraview.simple import (Clip, ColorBy, GetActiveCamera, GetActiveViewOrCreate, GetColorTransferFunction, Hide,
-                             Hide3DWidgets,
-                             Outline, Render, RenameSource, SetActiveSource, Show,
-                             WarpByVector, XMLPartitionedUnstructuredGridReader, servermanager)
-from vtk.numpy_interface import dataset_adapter as dsa
+from paraview.simple import (Clip, GetActiveCamera, GetActiveViewOrCreate, Hide, Hide3DWidgets, Outline, Render,
+                             RenameSource, SetActiveSource, Show, WarpByVector, XMLPartitionedUnstructuredGridReader)
+from solution_view import colour_by_von_mises  # Scripts/ is on PYTHONPATH (solution_gui_screenshot.sh)
 
 solution = os.environ["PTM_SOLUTION"]
 reader = XMLPartitionedUnstructuredGridReader(registrationName=os.path.basename(solution),
@@ -38,15 +35,7 @@ RenameSource("undeformed outline", outline)
 Hide(reader, view)
 Hide(warp, view)
 display = Show(clip, view)
-ColorBy(display, ("CELLS", "VonMises"))
-lut = GetColorTransferFunction("VonMises")
-lut.ApplyPreset("Turbo", True)
-# colour range to the 99th percentile: a few sliver or support-edge
-# tetrahedra carry peaks that would leave the rest one colour
-vm = dsa.WrapDataObject(servermanager.Fetch(reader)).CellData["VonMises"]
-vm = np.concatenate([np.asarray(a) for a in vm.Arrays]) if hasattr(vm, "Arrays") else np.asarray(vm)
-lut.RescaleTransferFunction(0.0, float(np.percentile(vm, 99)))
-display.SetScalarBarVisibility(view, True)
+colour_by_von_mises(reader, display, view)
 Show(outline, view)
 view.OrientationAxesVisibility = 1
 Render(view)  # paraview.simple resets the camera on a view's first render: have it now

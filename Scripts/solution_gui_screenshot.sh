@@ -37,7 +37,7 @@ mkdir -p "$HOME/.config/ParaView"
 printf '[General]\nGeneralSettings.ShowWelcomeDialog=false\n' > "$HOME/.config/ParaView/ParaView5.11.0.ini"
 
 # -qwindowgeometry (a Qt option) fills the screen: there is no window manager
-PTM_SOLUTION="$solution" PTM_READY="$work/ready" \
+PTM_SOLUTION="$solution" PTM_READY="$work/ready" PYTHONPATH="$PWD/Scripts${PYTHONPATH:+:$PYTHONPATH}" \
   timeout 300 paraview -qwindowgeometry 1600x1000+0+0 \
   --script="$PWD/Scripts/solution_gui_screenshot.py" > "$work/paraview.log" 2>&1 &
 gui=$!
