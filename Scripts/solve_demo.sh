@@ -10,11 +10,7 @@
 # Usage: bash Scripts/solve_demo.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash Scripts/install-deps.sh
-cmake -S . -B build -DBUILD_SHARED_LIBS=ON -DCMAKE_BUILD_TYPE=Release > /dev/null
-cmake --build build -j2 --target ParallelTetMesher
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-mkdir -p out
+source Scripts/prepare.sh # packages, the plugin's build, mpiexec's environment
 mpiexec -n 2 --oversubscribe pvbatch Scripts/tetmesh.py Data/ball.stl \
   -o out/ball.pvtu --subdomains 4 --size 0.1
 # the solver runs in the system Python, where dolfinx and petsc4py live
