@@ -90,7 +90,7 @@ std::vector<double> localSizeSamples(
 // Collective: the size field of the cutter (its SizeExpression, or the
 // SizeArray's samples from `sizeSource` or else `input`, whole on every
 // rank); false with the agreed message on every rank when it cannot be made.
-bool sizeFieldOf(vtkMultiProcessController* controller, const std::string& expression,
+bool cutterSizeField(vtkMultiProcessController* controller, const std::string& expression,
   const std::string& arrayName, vtkDataSet* sizeSource, vtkPolyData* input, ptm::SizeSamples& samples,
   ptm::SizeField& field, std::string& error)
 {
@@ -231,7 +231,7 @@ int vtkVolumeBalancedCutter::RequestData(
   }
   ptm::SizeSamples samples;
   ptm::SizeField size;
-  if (!sizeFieldOf(controller, this->SizeExpression, this->SizeArray,
+  if (!cutterSizeField(controller, this->SizeExpression, this->SizeArray,
         vtkDataSet::GetData(inputVector[1], 0), input, samples, size, message))
   {
     vtkErrorMacro("VolumeBalancedCutter: " << message);
