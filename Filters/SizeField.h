@@ -12,7 +12,7 @@
 //   triangulator and the mesher build the same field from them.
 // Either way every rank and both sides of every interface evaluate one
 // deterministic function of position.
-#include "InterfaceTriangulation.h" // ptm::SizeFunction
+#include "SizeFunction.h"
 
 #include <string>
 #include <vector>

@@ -4,7 +4,7 @@ For each K, the surface stages run once on one rank (subdomain_surfaces.py),
 then every subdomain is meshed on its own with the project's TetGen call
 (serial_tetgen, same switches and bound) and timed. With the plugin's own
 rank assignment (assign_subdomains_to_ranks below, the rule of
-Filters/Core/SubdomainAssignment.cpp) the predicted wall time on P ranks is
+Filters/Core/cut/SubdomainAssignment.cpp) the predicted wall time on P ranks is
 
     makespan(P) = surface stages(K) + max over ranks of the sum of its subdomains' seconds
 

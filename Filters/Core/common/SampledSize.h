@@ -7,7 +7,7 @@
 // the surface alone reaches the interior (there it follows the nearest
 // surface). Deterministic: the same samples give the same function on every
 // rank, so both sides of an interface get the same sizes.
-#include "InterfaceTriangulation.h" // SizeFunction
+#include "SizeFunction.h"
 
 #include <string>
 #include <vector>

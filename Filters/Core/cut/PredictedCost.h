@@ -24,7 +24,7 @@
 //  makes negative is 0. The same complex and field always give the same
 //  numbers.
 #include "HalfSpaceMeasure.h"
-#include "InterfaceTriangulation.h" // SizeFunction
+#include "SizeFunction.h"
 #include "SurfaceComplex.h"
 
 #include <vector>

@@ -22,6 +22,7 @@
 // Triangles under the bound are left only next to the boundary: with a
 // boundary point, or with a circumcircle that reaches a boundary segment.
 // The same input always gives bit-identical output.
+#include "SizeFunction.h"
 #include "SurfaceComplex.h"
 
 #include <functional>
@@ -29,9 +30,6 @@
 
 namespace ptm
 {
-// A size field: the edge length wanted at a point in space. Empty: none.
-using SizeFunction = std::function<double(const Vec3&)>;
-
 struct PlanarRegion
 {
   Vec3 origin;                            // a point of the plane
