@@ -39,7 +39,7 @@ constexpr const char* SourceFaceCADFaceId = "SourceFaceCADFaceId";
 // The facts of earlier stages that every later stage copies from its input's
 // field data to its output's (PolyDataConversion.h: passOnFieldData).
 constexpr const char* PassedOn[] = { BalanceCriterionName, MaximumImbalance, SourceFaceCADFaceId,
-  SizeFieldSamples, SizeFieldArray, "InterfaceNewPoints", "InterfaceTrianglesBelowMinimumAngle",
+  SizeFieldSamples, SizeFieldArray, "ContourPointsAdded", "InterfaceNewPoints", "InterfaceTrianglesBelowMinimumAngle",
   "InterfaceTrianglesBelowMinimumAngleAwayFromBoundary", "EncroachedBoundarySegments",
   "InterfaceMinimumAngle" };
 

@@ -1,5 +1,6 @@
 #include "vtkInterfaceTriangulator.h"
 
+#include "ContourSubdivision.h"
 #include "InterfaceTriangulation.h"
 #include "PhaseLog.h"
 #include "PipelineRequests.h"
@@ -102,6 +103,50 @@ std::vector<Done> triangulateRegions(const ptm::ComplexPiece& piece,
     progress(static_cast<double>(done.size()) / c.interfaces.size());
   }
   return done;
+}
+
+// Splits the long edges of the piece's interface loops (ContourSubdivision.h)
+// and numbers the new points from piece.globalPointCount (advanced past
+// them) in the order of their edges' global ids, which every rank learns:
+// a rank sees only the edges of its own regions, and ids must not depend on
+// which rank holds what. Returns how many points all ranks added.
+long long subdivideContours(vtkMultiProcessController* controller, ptm::ComplexPiece& piece,
+  const ptm::ContourSubdivisionOptions& options)
+{
+  const std::vector<ptm::EdgeSplit> splits =
+    ptm::interfaceEdgeSplits(piece.complex, piece.globalIds, options);
+  std::vector<long long> mine;
+  for (const ptm::EdgeSplit& s : splits)
+  {
+    mine.push_back(piece.globalIds[s.ends[0]]);
+    mine.push_back(piece.globalIds[s.ends[1]]);
+    mine.push_back(static_cast<long long>(s.points.size()));
+  }
+  const std::vector<long long> all = ptm::allGatherValues(controller, mine);
+  std::map<std::pair<long long, long long>, long long> firstId; // edge -> its points' count, then first id
+  for (std::size_t k = 0; k + 2 < all.size(); k += 3)
+  {
+    firstId[{ all[k], all[k + 1] }] = all[k + 2];
+  }
+  long long next = piece.globalPointCount;
+  for (auto& [edge, countThenId] : firstId)
+  {
+    const long long count = countThenId;
+    countThenId = next;
+    next += count;
+  }
+  ptm::applyEdgeSplits(piece.complex, splits);
+  for (const ptm::EdgeSplit& s : splits)
+  {
+    long long id = firstId.at({ piece.globalIds[s.ends[0]], piece.globalIds[s.ends[1]] });
+    for (std::size_t i = 0; i < s.points.size(); ++i)
+    {
+      piece.globalIds.push_back(id++);
+    }
+  }
+  const long long added = next - piece.globalPointCount;
+  piece.globalPointCount = next;
+  return added;
 }
 
 // The first global id of every region's new points, numbered from `next`
@@ -236,6 +281,18 @@ int vtkInterfaceTriangulator::RequestData(
     output->Initialize();
     return 0;
   }
+  long long contourPoints = 0;
+  if (this->SubdivideContours)
+  {
+    this->SetProgressText("Splitting long contour edges");
+    ptm::ContourSubdivisionOptions subdivision;
+    subdivision.size = this->MaximumEdgeLength > 0 ? this->MaximumEdgeLength : piece.inputMeanEdgeLength;
+    subdivision.sizeAt = field.size;
+    if (subdivision.size > 0)
+    {
+      contourPoints = subdivideContours(controller, piece, subdivision);
+    }
+  }
   ptm::SurfaceComplex& c = piece.complex;
   const std::vector<Done> done = triangulateRegions(piece, options, localError,
     [this](double fraction) { this->UpdateProgress(0.1 + 0.7 * fraction); });
@@ -294,6 +351,7 @@ int vtkInterfaceTriangulator::RequestData(
     a->InsertNextValue(value);
     fd->AddArray(a);
   };
+  addCount("ContourPointsAdded", contourPoints);
   addCount("InterfaceNewPoints", total.newPoints);
   addCount("InterfaceTrianglesBelowMinimumAngle", total.belowMinimumAngle);
   addCount("InterfaceTrianglesBelowMinimumAngleAwayFromBoundary", total.belowMinimumAngleAwayFromBoundary);
@@ -313,5 +371,6 @@ void vtkInterfaceTriangulator::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MinimumAngle: " << this->MinimumAngle << "\n";
   os << indent << "MaximumEdgeLength: " << this->MaximumEdgeLength << "\n";
   os << indent << "SizeExpression: " << this->SizeExpression << "\n";
+  os << indent << "SubdivideContours: " << this->SubdivideContours << "\n";
   os << indent << "Controller: " << this->Controller << "\n";
 }

@@ -5,9 +5,11 @@
  * Stage 2 of the parallel tetrahedral mesher. Input: the labeled surface
  * complex from vtkVolumeBalancedCutter. Every interface region (the loops of
  * one plane between one pair of subdomains) is triangulated in its plane with
- * CGAL's constrained Delaunay triangulation and refined inside only (no point
- * is ever added on a loop, which is shared with surface triangles), with a
- * minimum angle and a maximum edge length. A rank triangulates the regions of
+ * CGAL's constrained Delaunay triangulation and refined inside only, with a
+ * minimum angle and a maximum edge length. Before that, every loop edge longer
+ * than the size is split into equal parts, and the surface triangles on it
+ * with it (SubdivideContours; the same points on every rank, since the rule
+ * reads only the edge); the triangulation itself adds no point on a loop. A rank triangulates the regions of
  * its own subdomains from canonically ordered input, so two ranks sharing an
  * interface produce bit-identical triangles; the new points get global ids
  * after the complex's points, region by region in (plane, pair) order, which
@@ -17,7 +19,8 @@
  * (SubdomainPair oriented out of the first subdomain, SourceFaceId -1,
  * PlaneId of the plane); field data adds InterfaceTrianglesBelowMinimumAngle,
  * InterfaceTrianglesBelowMinimumAngleAwayFromBoundary (0 expected),
- * EncroachedBoundarySegments, InterfaceMinimumAngle and InterfaceNewPoints.
+ * EncroachedBoundarySegments, InterfaceMinimumAngle, InterfaceNewPoints and
+ * ContourPointsAdded (the points SubdivideContours put on the loops first).
  * Collective: every rank must execute it; a failure anywhere fails all.
  */
 #ifndef vtkInterfaceTriangulator_h
@@ -61,6 +64,18 @@ public:
   vtkGetMacro(SizeExpression, std::string);
   ///@}
 
+  ///@{
+  /// Split every edge of the interfaces' boundaries (the contours, where a
+  /// plane crosses the surface, and the lines where two planes meet) into
+  /// equal parts at most the size long before triangulating (default on):
+  /// MaximumEdgeLength, or the input's mean edge when that is 0, or the size
+  /// field where it is smaller. Both neighbours get the same points, which
+  /// lie on the input surface and in the plane.
+  vtkSetMacro(SubdivideContours, vtkTypeBool);
+  vtkGetMacro(SubdivideContours, vtkTypeBool);
+  vtkBooleanMacro(SubdivideContours, vtkTypeBool);
+  ///@}
+
   void SetController(vtkMultiProcessController*);
   vtkGetObjectMacro(Controller, vtkMultiProcessController);
 
@@ -74,6 +89,7 @@ protected:
   double MinimumAngle = 20.7;
   double MaximumEdgeLength = 0.0;
   std::string SizeExpression;
+  vtkTypeBool SubdivideContours = 1;
   vtkMultiProcessController* Controller = nullptr;
 
 private:

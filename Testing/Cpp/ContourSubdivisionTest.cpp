@@ -1,0 +1,176 @@
+// Stage 2a (ContourSubdivision.h): the long loop edges of a decomposition
+// split at the size. On a coarse torus (edges far longer than the size), for
+// K and both strategies: every loop edge ends up at most 1.5 x the size; the
+// new points lie on the edge they split; the subdomain volumes do not change;
+// after triangulating the interfaces every subdomain is closed, edge-manifold
+// and does not cross itself; and a rank that holds only one subdomain's faces
+// computes bit-identical points for the edges it shares.
+#include "ContourSubdivision.h"
+#include "SelfIntersectionCheck.h"
+#include "TestSurfaces.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+using namespace ptm;
+using namespace ptm::test;
+
+namespace
+{
+// What a rank holding only subdomain s has: its faces (all points kept, so
+// indices and global ids stay the complex's).
+SurfaceComplex pieceOf(const SurfaceComplex& c, int s)
+{
+  SurfaceComplex piece = c;
+  piece.triangles.clear();
+  piece.trianglePairs.clear();
+  piece.sourceFaces.clear();
+  piece.interfaces.clear();
+  for (std::size_t t = 0; t < c.triangles.size(); ++t)
+  {
+    if (c.trianglePairs[t][0] == s || c.trianglePairs[t][1] == s)
+    {
+      piece.triangles.push_back(c.triangles[t]);
+      piece.trianglePairs.push_back(c.trianglePairs[t]);
+      piece.sourceFaces.push_back(c.sourceFaces[t]);
+    }
+  }
+  for (const InterfaceRegion& r : c.interfaces)
+  {
+    if (r.pair[0] == s || r.pair[1] == s)
+    {
+      piece.interfaces.push_back(r);
+    }
+  }
+  return piece;
+}
+
+double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b)
+{
+  const Vec3 d = b - a;
+  const double t = std::clamp(dot(p - a, d) / dot(d, d), 0.0, 1.0);
+  return norm(p - (a + t * d));
+}
+} // namespace
+
+class ContourSubdivision : public ::testing::TestWithParam<std::tuple<int, CutStrategy>>
+{
+};
+
+TEST_P(ContourSubdivision, ShortEdgesSameVolumesClosedSubdomainsSamePointsOnEveryPiece)
+{
+  const auto [K, strategy] = GetParam();
+  const TriangleSurface coarse = torus({ 0, 0, 0 }, 1.0, 0.4, 10, 6); // edges 0.4-0.7
+  const double size = 0.1;
+  std::ostringstream label;
+  label << "K=" << K << " " << toString(strategy);
+  const DecompositionResult d = decomposeVolumeBalanced(coarse, stageCaseOptions(K, strategy));
+  ASSERT_TRUE(d.ok) << label.str() << ": " << d.error;
+  SurfaceComplex c = d.complex;
+  std::vector<Index> ids(c.points.size());
+  for (std::size_t i = 0; i < ids.size(); ++i)
+  {
+    ids[i] = static_cast<Index>(i);
+  }
+  ContourSubdivisionOptions options;
+  options.size = size;
+  const std::vector<EdgeSplit> splits = interfaceEdgeSplits(c, ids, options);
+  ASSERT_FALSE(splits.empty()) << label.str();
+
+  // a piece computes the same points for the edges it has
+  for (int s = 0; s < K; ++s)
+  {
+    std::map<std::array<Index, 2>, std::vector<Vec3>> whole;
+    for (const EdgeSplit& e : splits)
+    {
+      whole[e.ends] = e.points;
+    }
+    for (const EdgeSplit& e : interfaceEdgeSplits(pieceOf(c, s), ids, options))
+    {
+      ASSERT_TRUE(whole.count(e.ends)) << label.str();
+      EXPECT_EQ(whole[e.ends], e.points) << label.str() << ": subdomain " << s;
+    }
+  }
+
+  const std::vector<double> before = subdomainVolumes(c);
+  const double diagonal = 2.8; // of the torus's bounding box: 2.8 x 2.8 x 0.8
+  const std::size_t oldPoints = c.points.size();
+  applyEdgeSplits(c, splits);
+  std::size_t added = 0;
+  for (const EdgeSplit& e : splits)
+  {
+    for (const Vec3& p : e.points)
+    {
+      EXPECT_LT(distanceToSegment(p, c.points[e.ends[0]], c.points[e.ends[1]]), 1e-14 * diagonal);
+      EXPECT_EQ(p, c.points[oldPoints + added]);
+      ++added;
+    }
+  }
+  EXPECT_EQ(c.points.size(), oldPoints + added);
+  for (const InterfaceRegion& r : c.interfaces)
+  {
+    for (const DirectedEdge& e : r.edges)
+    {
+      EXPECT_LE(norm(c.points[e[1]] - c.points[e[0]]), 1.5 * size) << label.str();
+    }
+  }
+  const std::vector<double> after = subdomainVolumes(c);
+  for (int s = 0; s < K; ++s)
+  {
+    EXPECT_NEAR(after[s] / before[s], 1.0, 1e-12) << label.str() << ": subdomain " << s;
+  }
+
+  const InterfaceFigures figures = triangulateAllInterfaces(c);
+  ASSERT_TRUE(figures.ok) << label.str() << ": " << figures.error;
+  for (int s = 0; s < K; ++s)
+  {
+    const std::vector<Triangle> surface = subdomainTriangles(c, s);
+    std::map<DirectedEdge, int> directed;
+    for (const Triangle& t : surface)
+    {
+      for (int e = 0; e < 3; ++e)
+      {
+        ++directed[{ t[e], t[(e + 1) % 3] }];
+      }
+    }
+    std::size_t bad = 0;
+    for (const auto& [e, n] : directed)
+    {
+      auto reverse = directed.find({ e[1], e[0] });
+      bad += (n != 1 || reverse == directed.end() || reverse->second != 1) ? 1 : 0;
+    }
+    EXPECT_EQ(bad, 0u) << label.str() << ": subdomain " << s << " not closed or not edge-manifold";
+    const SelfIntersectionReport crossing = checkSelfIntersection(TriangleSurface{ c.points, surface });
+    EXPECT_TRUE(crossing.checked) << label.str() << ": " << crossing.note;
+    EXPECT_FALSE(crossing.intersects) << label.str() << ": subdomain " << s << " crosses itself";
+  }
+}
+
+TEST(ContourSubdivisionRule, ShortEdgesStayAndTheFieldRefines)
+{
+  ContourSubdivisionOptions options;
+  options.size = 1.0;
+  SurfaceComplex c;
+  c.points = { { 0, 0, 0 }, { 1.4, 0, 0 }, { 1.4, 3.0, 0 } };
+  c.interfaces.push_back({ 0, { 0, 1 }, { { 0, 1 }, { 1, 2 }, { 2, 0 } } });
+  const std::vector<Index> ids{ 0, 1, 2 };
+  std::vector<EdgeSplit> splits = interfaceEdgeSplits(c, ids, options);
+  ASSERT_EQ(splits.size(), 2u); // 1.4 stays; 3.0 in 3 parts; the hypotenuse 3.31 in 3
+  EXPECT_EQ(splits[0].points.size(), 2u);
+  // a finer field where it is below the size
+  options.sizeAt = [](const Vec3&) { return 0.5; };
+  splits = interfaceEdgeSplits(c, ids, options);
+  ASSERT_EQ(splits.size(), 3u);
+  EXPECT_EQ(splits[0].points.size(), 2u); // 1.4 / 0.5 = 2.8: 3 parts
+}
+
+INSTANTIATE_TEST_SUITE_P(KAndStrategy, ContourSubdivision,
+  ::testing::Combine(::testing::Values(2, 4, 8),
+    ::testing::Values(CutStrategy::ParallelPlanes, CutStrategy::RecursiveBisection)),
+  [](const auto& info) {
+    return std::string(toString(std::get<1>(info.param))) + "_K" + std::to_string(std::get<0>(info.param));
+  });
