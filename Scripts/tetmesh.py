@@ -51,6 +51,9 @@ def parse_arguments(argv):
     p.add_argument("--direction", default="Inertia", choices=["Inertia", "LongestExtent", "X", "Y", "Z"])
     p.add_argument("--radius-edge-ratio", type=float, default=2.0, help="TetGen quality bound (default 2.0)")
     p.add_argument("--relax-iterations", type=int, default=10, help="surface relaxation sweeps (default 10)")
+    p.add_argument("--no-contour-subdivision", action="store_true",
+                   help="keep the contours as the cut made them (default: their long edges are split at the size "
+                   "before the interfaces are triangulated)")
     p.add_argument("--no-boundary-refinement", action="store_true",
                    help="mesh the subdomain surfaces as they are (TetGen keeps every input sliver)")
     p.add_argument("--coplanar-tolerance", type=float, default=0.0,
@@ -208,7 +211,9 @@ def main(argv):
     if args.save_surface:
         write_off(meshed, args.save_surface)
     interfaces = run("interface", simple.InterfaceTriangulator(Input=cutter, MaximumEdgeLength=args.size,
-                                                                 SizeExpression=args.size_expression))
+                                                                 SizeExpression=args.size_expression,
+                                                                 SubdivideContours=0 if args.no_contour_subdivision
+                                                                 else 1))
     relaxed = run("relax", simple.SurfaceRelaxer(Input=interfaces, NumberOfIterations=args.relax_iterations,
                                                  Mode=args.relax_mode,
                                                  MaximumSurfaceDeviation=args.max_surface_deviation))

@@ -248,6 +248,15 @@ TEST(TetGenSubdomainMesher, FailuresAreReportedNotThrown)
   EXPECT_FALSE(r.ok);
   EXPECT_NE(r.error.find("refused"), std::string::npos);
 
+  // an index past the points in a triangle's second corner: named, and no
+  // point read before every index is checked (AddressSanitizer in the
+  // sanitizer build catches that read)
+  TriangleSurface dangling = subdividedBox({ 0, 0, 0 }, { 1, 1, 1 }, 1);
+  dangling.triangles[0][1] = static_cast<Index>(dangling.points.size()) + 1000000;
+  r = meshClosedSurface(dangling, {});
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("does not exist"), std::string::npos) << r.error;
+
   EXPECT_NE(describeTetGenError(5).find("close"), std::string::npos);
 }
 

@@ -453,12 +453,13 @@ std::string inputError(const TriangleSurface& s, const TetMeshingOptions& option
   double edgeSum = 0;
   for (const auto& t : s.triangles)
   {
+    // every index checked before any point is read
+    if (std::any_of(t.begin(), t.end(), [n](Index i) { return i < 0 || i >= static_cast<Index>(n); }))
+    {
+      return "a triangle refers to a point that does not exist";
+    }
     for (int k = 0; k < 3; ++k)
     {
-      if (t[k] < 0 || t[k] >= static_cast<Index>(n))
-      {
-        return "a triangle refers to a point that does not exist";
-      }
       edgeSum += norm(s.points[t[(k + 1) % 3]] - s.points[t[k]]);
     }
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] ||
