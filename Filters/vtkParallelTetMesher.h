@@ -63,7 +63,12 @@ public:
   ///@}
 
   ///@{
-  /// Smallest dihedral angle TetGen should aim for (degrees, -q ratio/angle); 0 = TetGen's default.
+  /// Smallest dihedral angle TetGen should aim for (degrees, the second -q
+  /// value); 0 = TetGen's own default (none). Default 10: with the surface
+  /// kept (-Y) TetGen cannot split a boundary face to remove a sliver, but it
+  /// still removes most interior and near-boundary ones (corpus, 2 ranks,
+  /// K = 16: joint 1.16 % -> 0.57 % of tetrahedra under 10 degrees for 12 %
+  /// more tetrahedra, 3torus 0.60 % -> 0.27 % for 7 %).
   vtkSetMacro(MinimumDihedralAngle, double);
   vtkGetMacro(MinimumDihedralAngle, double);
   ///@}
@@ -128,7 +133,7 @@ protected:
 
   double RadiusEdgeRatio = 2.0;
   double MaximumVolume = 0.0;
-  double MinimumDihedralAngle = 0.0;
+  double MinimumDihedralAngle = 10.0;
   std::string ExtraSwitches;
   std::string SizeExpression;
   bool BoundaryRefinement = true;

@@ -50,6 +50,9 @@ def parse_arguments(argv):
     p.add_argument("--strategy", default="RecursiveBisection", choices=["RecursiveBisection", "ParallelPlanes"])
     p.add_argument("--direction", default="Inertia", choices=["Inertia", "LongestExtent", "X", "Y", "Z"])
     p.add_argument("--radius-edge-ratio", type=float, default=2.0, help="TetGen quality bound (default 2.0)")
+    p.add_argument("--min-dihedral", type=float, default=10.0,
+                   help="smallest dihedral angle TetGen aims for, the second -q value (default 10; 0: none, "
+                   "as serial tetgen -pq2.0)")
     p.add_argument("--relax-iterations", type=int, default=10, help="surface relaxation sweeps (default 10)")
     p.add_argument("--no-contour-subdivision", action="store_true",
                    help="keep the contours as the cut made them (default: their long edges are split at the size "
@@ -219,7 +222,8 @@ def main(argv):
                                                  MaximumSurfaceDeviation=args.max_surface_deviation))
     volume = args.size ** 3 / (6 * math.sqrt(2)) if args.size > 0 else 0.0
     mesher = run("volume meshing", simple.ParallelTetMesher(
-        Input=relaxed, RadiusEdgeRatio=args.radius_edge_ratio, MaximumVolume=volume,
+        Input=relaxed, RadiusEdgeRatio=args.radius_edge_ratio, MinimumDihedralAngle=args.min_dihedral,
+        MaximumVolume=volume,
         BoundaryRefinement=0 if args.no_boundary_refinement else 1,
         CoplanarTolerance=args.coplanar_tolerance, SizeExpression=args.size_expression))
 

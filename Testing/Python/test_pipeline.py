@@ -3,6 +3,7 @@ the labeled complex and the volume mesh are checked independently of the
 plugin's code (mesh_checks.py), and a canonical digest of every result is
 saved so that compare_pipeline_runs.py can prove 1 and 2 ranks agree."""
 import json
+import math
 import os
 import sys
 
@@ -25,6 +26,11 @@ CASES = [(surface, K, strategy, "LongestExtent" if strategy == "ParallelPlanes" 
 CASES.append(("ball.off", 3, "ParallelPlanes", "X", "KeepSurface"))
 CASES.append(("bracket.stl", 4, "RecursiveBisection", "Inertia", "SmoothSurface"))
 CASES.append(("ball.stl", 4, "RecursiveBisection", "Inertia", "SmoothSurface"))
+# (surface, K, strategy): an interface size of the bounding-box diagonal / 40,
+# finer than the surface's own edges, so that the contour subdivision (on by
+# default, SubdivideContours) splits edges here and the rank-independence
+# comparison covers the numbering of its points
+FINE_INTERFACES = {("bracket.stl", 7, "RecursiveBisection"), ("torus.stl", 4, "ParallelPlanes")}
 SMOOTH_DEVIATION = 0.01  # MaximumSurfaceDeviation of the SmoothSurface cases (the default)
 
 
@@ -53,6 +59,10 @@ def main():
         cutter = simple.VolumeBalancedCutter(Input=reader, NumberOfSubdomains=K,
                                              Strategy=strategy, Direction=direction)
         interfaces = simple.InterfaceTriangulator(Input=cutter)
+        if (surface, K, strategy) in FINE_INTERFACES and mode == "KeepSurface":
+            bounds = reader.GetDataInformation().GetBounds()
+            interfaces.MaximumEdgeLength = math.sqrt(sum((bounds[2 * i + 1] - bounds[2 * i]) ** 2
+                                                         for i in range(3))) / 40
         relaxed = simple.SurfaceRelaxer(Input=interfaces, Mode=mode, MaximumSurfaceDeviation=SMOOTH_DEVIATION)
         mesher = simple.ParallelTetMesher(Input=relaxed)
         base = os.path.join(out_dir, name)
@@ -68,6 +78,11 @@ def main():
         for proxy in (mesher, relaxed, interfaces, cutter, reader):
             simple.Delete(proxy)
     if t.rank() == 0:
+        # the contour subdivision (on by default) must be exercised here, so
+        # that the rank-independence comparison covers its numbering
+        added = sum(v["contour_points_added"] for v in summary.values())
+        assert added > 0, "no case split a contour edge"
+        print("contour points added over all cases:", added)
         with open(os.path.join(out_dir, "summary.json"), "w") as f:
             json.dump(summary, f, indent=1)
 
@@ -157,6 +172,8 @@ def check_case(base, K, mode):
              relaxed_points=rtable, mesh_points=coords, mesh_tets=tets[order])
     fd = relaxed.GetFieldData()
     figures.update({"balance": balance, "interface_below_min_angle": counted, "relax_volume_change": volume_change,
+                    "contour_points_added": int(vtk_to_numpy(complex_data.GetFieldData().GetArray(
+                        "ContourPointsAdded"))[0]),
                     "relax_min_angle": [float(vtk_to_numpy(fd.GetArray(a))[0])
                                         for a in ("MinimumAngleBefore", "MinimumAngleAfter")],
                     "relax_below_10": [float(vtk_to_numpy(fd.GetArray(a))[0])
