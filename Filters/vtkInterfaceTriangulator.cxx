@@ -2,12 +2,12 @@
 
 #include "ContourSubdivision.h"
 #include "InterfaceTriangulation.h"
-#include "PhaseLog.h"
 #include "PipelineRequests.h"
 #include "PolyDataConversion.h"
 #include "PropertyChecks.h"
 #include "RankCollectives.h"
 #include "SizeField.h"
+#include "StageRun.h"
 #include "SurfaceComplexArrays.h"
 
 #include "vtkDoubleArray.h"
@@ -193,6 +193,57 @@ std::map<RegionKey, long long> firstNewIds(
   }
   return firstNewId;
 }
+
+// The complex with every region's triangles (and their new points, numbered
+// from the region's first new id) instead of its loops.
+void replaceLoopsByTriangles(
+  ptm::ComplexPiece& piece, const std::vector<Done>& done, const std::map<RegionKey, long long>& firstNewId)
+{
+  ptm::SurfaceComplex& c = piece.complex;
+  if (c.trianglePlanes.size() != c.triangles.size())
+  {
+    c.trianglePlanes.assign(c.triangles.size(), -1);
+  }
+  for (const Done& d : done)
+  {
+    std::vector<ptm::Index> pointOf = d.pointOfLocal;
+    long long id = firstNewId.at(d.key);
+    for (const ptm::Vec3& p : d.triangulation.newPoints)
+    {
+      pointOf.push_back(static_cast<ptm::Index>(c.points.size()));
+      c.points.push_back(p);
+      piece.globalIds.push_back(id++);
+    }
+    for (const ptm::Triangle& tri : d.triangulation.triangles)
+    {
+      c.triangles.push_back({ pointOf[tri[0]], pointOf[tri[1]], pointOf[tri[2]] });
+      c.trianglePairs.push_back(d.pair);
+      c.sourceFaces.push_back(-1);
+      c.trianglePlanes.push_back(d.planeId);
+    }
+  }
+  c.interfaces.clear();
+}
+
+// The figures of every region (the same on every rank) in field data.
+void addFigures(vtkFieldData* fd, const RegionFigures& total, long long contourPoints, bool anyRegion)
+{
+  auto addCount = [&](const char* name, long long value) {
+    vtkNew<vtkIdTypeArray> a;
+    a->SetName(name);
+    a->InsertNextValue(value);
+    fd->AddArray(a);
+  };
+  addCount("ContourPointsAdded", contourPoints);
+  addCount("InterfaceNewPoints", total.newPoints);
+  addCount("InterfaceTrianglesBelowMinimumAngle", total.belowMinimumAngle);
+  addCount("InterfaceTrianglesBelowMinimumAngleAwayFromBoundary", total.belowMinimumAngleAwayFromBoundary);
+  addCount("EncroachedBoundarySegments", total.encroached);
+  vtkNew<vtkDoubleArray> angle;
+  angle->SetName("InterfaceMinimumAngle");
+  angle->InsertNextValue(anyRegion ? total.minimumAngle : 0.0);
+  fd->AddArray(angle);
+}
 } // namespace
 
 vtkInterfaceTriangulator::vtkInterfaceTriangulator()
@@ -212,79 +263,48 @@ int vtkInterfaceTriangulator::RequestInformation(
   return 1;
 }
 
+std::string vtkInterfaceTriangulator::PropertyError()
+{
+  ptm::PropertyChecks checks("InterfaceTriangulator");
+  checks.Require(this->MinimumAngle >= 1.0 && this->MinimumAngle <= 34.0, "MinimumAngle",
+    "lie in [1, 34] degrees", this->MinimumAngle);
+  checks.Require(this->MaximumEdgeLength >= 0.0 && std::isfinite(this->MaximumEdgeLength),
+    "MaximumEdgeLength", "be 0 (automatic) or a positive length", this->MaximumEdgeLength);
+  return checks.Ok() ? "" : checks.Message();
+}
+
 int vtkInterfaceTriangulator::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkMultiProcessController* controller = this->Controller;
-  ptm::phases::setPhase(controller, "interface"); // PhaseLog.h
-  std::string message;
-
-  this->UpdateProgress(0.0);
-  // nonsense property values (the same on every rank, so every rank stops)
-  ptm::PropertyChecks checks("InterfaceTriangulator");
-  checks.Require(this->MinimumAngle >= 1.0 && this->MinimumAngle <= 34.0, "MinimumAngle",
-    "lie in [1, 34] degrees", this->MinimumAngle);
-  checks.Require(this->MaximumEdgeLength >= 0.0 && std::isfinite(this->MaximumEdgeLength),
-    "MaximumEdgeLength", "be 0 (automatic) or a positive length", this->MaximumEdgeLength);
-  if (!checks.Ok())
-  {
-    vtkErrorMacro(<< checks.Message());
-    output->Initialize();
-    return 0;
-  }
-  this->SetProgressText("Reading the complex");
+  ptm::StageRun run(this, controller, "InterfaceTriangulator", "interface", { output }); // StageRun.h
   ptm::ComplexPiece piece;
+  if (run.PropertiesRefused(this->PropertyError()) || !run.ReadPiece(input, piece))
+  {
+    return run.Failure();
+  }
   std::string localError;
-  if (!ptm::complexFromPolyData(input, piece, localError))
-  {
-    localError = "InterfaceTriangulator: " + localError;
-  }
-  if (!ptm::agreeAllSucceeded(controller, localError.empty(), localError, message))
-  {
-    vtkErrorMacro(<< message);
-    output->Initialize();
-    return 0;
-  }
-
-  // Triangulate every region of this piece from canonically ordered input.
-  this->SetProgressText("Triangulating interfaces");
-  ptm::InterfaceTriangulationOptions options;
-  options.minimumAngleDegrees = this->MinimumAngle;
-  options.maximumEdgeLength = this->MaximumEdgeLength;
   const ptm::SizeField field = ptm::complexSizeField(
     this->SizeExpression, input ? input->GetFieldData() : nullptr, localError);
-  options.sizeAt = field.size;
-  if (!localError.empty())
-  {
-    // the same property on every rank, so every rank stops here
-    vtkErrorMacro(<< "InterfaceTriangulator: " << localError);
-    output->Initialize();
-    return 0;
-  }
   // A size field must be positive where the interfaces meet the surface
   // (inside, the mesher falls back to the automatic size); a field that
   // reaches 0 at the surface would refine without end.
-  if (field)
+  std::vector<double> sizes;
+  if (localError.empty() && field)
   {
-    std::vector<double> sizes;
-    std::string error;
-    if (!ptm::sizesAt(field, piece.complex.points, sizes, error))
-    {
-      localError = "InterfaceTriangulator: " + error;
-    }
+    ptm::sizesAt(field, piece.complex.points, sizes, localError);
   }
-  if (!ptm::agreeAllSucceeded(controller, localError.empty(), localError, message))
+  if (run.FailedAnywhere(localError))
   {
-    vtkErrorMacro(<< message);
-    output->Initialize();
-    return 0;
+    return run.Failure();
   }
+
   long long contourPoints = 0;
   if (this->SubdivideContours)
   {
-    this->SetProgressText("Splitting long contour edges");
+    run.Step(0.05, "Splitting long contour edges");
     ptm::ContourSubdivisionOptions subdivision;
     subdivision.size = this->MaximumEdgeLength > 0 ? this->MaximumEdgeLength : piece.inputMeanEdgeLength;
     subdivision.sizeAt = field.size;
@@ -293,76 +313,37 @@ int vtkInterfaceTriangulator::RequestData(
       contourPoints = subdivideContours(controller, piece, subdivision);
     }
   }
-  ptm::SurfaceComplex& c = piece.complex;
+
+  // Triangulate every region of this piece from canonically ordered input.
+  run.Step(0.1, "Triangulating interfaces");
+  ptm::InterfaceTriangulationOptions options;
+  options.minimumAngleDegrees = this->MinimumAngle;
+  options.maximumEdgeLength = this->MaximumEdgeLength;
+  options.sizeAt = field.size;
   const std::vector<Done> done = triangulateRegions(piece, options, localError,
     [this](double fraction) { this->UpdateProgress(0.1 + 0.7 * fraction); });
-  if (!ptm::agreeAllSucceeded(controller, localError.empty(), localError, message))
+  if (run.FailedAnywhere(localError))
   {
-    vtkErrorMacro("InterfaceTriangulator failed: " << message);
-    output->Initialize();
-    return 0;
+    return run.Failure();
   }
-  if (ptm::agreeAnyAborted(controller, this))
+  if (run.AbortedAnywhere())
   {
-    output->Initialize();
-    return 1;
+    return run.Aborted();
   }
 
   // Global ids of the new points: every rank learns every region's count.
   RegionFigures total;
   long long next = piece.globalPointCount;
   const std::map<RegionKey, long long> firstNewId = firstNewIds(controller, done, next, total);
-
-  // The complex with interface triangles instead of loops.
-  if (c.trianglePlanes.size() != c.triangles.size())
-  {
-    c.trianglePlanes.assign(c.triangles.size(), -1);
-  }
-  for (const Done& d : done)
-  {
-    const ptm::InterfaceTriangulation& t = d.triangulation;
-    const std::size_t boundaryCount = d.pointOfLocal.size();
-    std::vector<ptm::Index> pointOf = d.pointOfLocal;
-    long long id = firstNewId.at(d.key);
-    for (const ptm::Vec3& p : t.newPoints)
-    {
-      pointOf.push_back(static_cast<ptm::Index>(c.points.size()));
-      c.points.push_back(p);
-      piece.globalIds.push_back(id++);
-    }
-    for (const ptm::Triangle& tri : t.triangles)
-    {
-      c.triangles.push_back({ pointOf[tri[0]], pointOf[tri[1]], pointOf[tri[2]] });
-      c.trianglePairs.push_back(d.pair);
-      c.sourceFaces.push_back(-1);
-      c.trianglePlanes.push_back(d.planeId);
-    }
-    (void)boundaryCount;
-  }
-  c.interfaces.clear();
+  replaceLoopsByTriangles(piece, done, firstNewId);
   piece.globalPointCount = next;
 
-  this->SetProgressText("Writing the complex");
+  run.Step(0.9, "Writing the complex");
   ptm::complexToPolyData(piece, {}, output);
   vtkFieldData* fd = output->GetFieldData();
-  auto addCount = [&](const char* name, long long value) {
-    vtkNew<vtkIdTypeArray> a;
-    a->SetName(name);
-    a->InsertNextValue(value);
-    fd->AddArray(a);
-  };
-  addCount("ContourPointsAdded", contourPoints);
-  addCount("InterfaceNewPoints", total.newPoints);
-  addCount("InterfaceTrianglesBelowMinimumAngle", total.belowMinimumAngle);
-  addCount("InterfaceTrianglesBelowMinimumAngleAwayFromBoundary", total.belowMinimumAngleAwayFromBoundary);
-  addCount("EncroachedBoundarySegments", total.encroached);
-  vtkNew<vtkDoubleArray> angle;
-  angle->SetName("InterfaceMinimumAngle");
-  angle->InsertNextValue(firstNewId.empty() ? 0.0 : total.minimumAngle);
-  fd->AddArray(angle);
+  addFigures(fd, total, contourPoints, !firstNewId.empty());
   ptm::passOnFieldData(input, fd); // the cutter's facts and the size samples
-  this->UpdateProgress(1.0);
-  return 1;
+  return run.Done();
 }
 
 void vtkInterfaceTriangulator::PrintSelf(ostream& os, vtkIndent indent)

@@ -85,6 +85,8 @@ protected:
 
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  // The clauses naming every nonsense property value; empty when all are fine.
+  std::string PropertyError();
 
   double MinimumAngle = 20.7;
   double MaximumEdgeLength = 0.0;

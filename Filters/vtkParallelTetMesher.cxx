@@ -8,6 +8,7 @@
 #include "PropertyChecks.h"
 #include "RankCollectives.h"
 #include "SizeField.h"
+#include "StageRun.h"
 #include "SubdomainSurface.h"
 #include "SurfaceComplexArrays.h"
 #include "SurfaceRefinement.h"
@@ -481,6 +482,67 @@ void addTotals(
   addValue("RankMeshingSeconds", seconds);
 }
 /// @}
+
+// TetGen's options from the filter's properties; the automatic volume bound
+// is a regular tetrahedron with the input surface's mean edge, the same for
+// every subdomain, so the density does not depend on K.
+ptm::TetMeshingOptions meshingOptions(vtkParallelTetMesher* filter, const ptm::ComplexPiece& piece)
+{
+  ptm::TetMeshingOptions options;
+  options.radiusEdgeRatio = filter->GetRadiusEdgeRatio();
+  options.maximumVolume = filter->GetMaximumVolume() > 0 || !(piece.inputMeanEdgeLength > 0)
+    ? filter->GetMaximumVolume()
+    : std::pow(piece.inputMeanEdgeLength, 3) / (6.0 * std::sqrt(2.0));
+  options.minimumDihedralAngle = filter->GetMinimumDihedralAngle();
+  options.extraSwitches = filter->GetExtraSwitches();
+  return options;
+}
+
+// Meshes every subdomain of `owned` in turn (progress and warnings on
+// `filter`); the first failure, naming its subdomain, or "".
+std::string meshOwnedSubdomains(vtkParallelTetMesher* filter, const ptm::ComplexPiece& piece,
+  const ptm::TetMeshingOptions& options, const ptm::SurfaceRefinementOptions* refinement,
+  const ptm::SizeField& field, OwnedSubdomains& owned)
+{
+  for (std::size_t k = 0; k < owned.ids.size(); ++k)
+  {
+    const std::string where = "subdomain " + std::to_string(owned.ids[k]) + ": ";
+    std::string error;
+    if (!ptm::extractSubdomainSurface(piece.complex, piece.globalIds, owned.ids[k], owned.surfaces[k], error))
+    {
+      return error;
+    }
+    filter->SetProgressText(("Meshing " + where).c_str());
+    const auto start = std::chrono::steady_clock::now();
+    try
+    {
+      MeshedSubdomain m = meshSubdomain(owned.surfaces[k], options, refinement, field);
+      for (const std::string& w : m.warnings)
+      {
+        vtkWarningWithObjectMacro(filter, << where << w);
+      }
+      if (!m.error.empty())
+      {
+        return where + m.error;
+      }
+      owned.pointsAdded[k] = m.pointsAdded;
+      owned.volumeChange[k] = m.volumeChange;
+      owned.deviation[k] = m.deviation;
+      owned.meshes[k] = std::move(m.mesh);
+    }
+    catch (const std::bad_alloc&)
+    {
+      return where + "out of memory while meshing";
+    }
+    catch (const std::exception& e)
+    {
+      return where + e.what();
+    }
+    owned.seconds[k] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    filter->UpdateProgress(0.05 + 0.8 * static_cast<double>(k + 1) / owned.ids.size());
+  }
+  return "";
+}
 } // namespace
 
 vtkStandardNewMacro(vtkParallelTetMesher);
@@ -539,144 +601,56 @@ int vtkParallelTetMesher::RequestData(
   vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
   vtkPolyData* boundary = vtkPolyData::GetData(outputVector, 1);
   vtkMultiProcessController* controller = this->Controller;
-  ptm::phases::setPhase(controller, "volume meshing"); // PhaseLog.h; the last phase is "end": writing
-  const int rank = ptm::rankOf(controller);
-  std::string message, localError;
-  auto fail = [&](const std::string& text) {
-    vtkErrorMacro("ParallelTetMesher failed: " << text);
-    output->Initialize();
-    boundary->Initialize();
-    return 0;
-  };
-
-  this->UpdateProgress(0.0);
-  // nonsense property values (the same on every rank, so every rank stops)
-  const std::string propertyError = this->PropertyError();
-  if (!propertyError.empty())
-  {
-    vtkErrorMacro(<< propertyError);
-    output->Initialize();
-    boundary->Initialize();
-    return 0;
-  }
-  this->SetProgressText("Extracting subdomain surfaces");
+  // StageRun.h; PhaseLog.h: the last phase is "end": writing
+  ptm::StageRun run(this, controller, "ParallelTetMesher", "volume meshing", { output, boundary });
   ptm::ComplexPiece piece;
-  if (!ptm::complexFromPolyData(input, piece, localError))
+  if (run.PropertiesRefused(this->PropertyError()) || !run.ReadPiece(input, piece))
   {
-    localError = "ParallelTetMesher: " + localError;
+    return run.Failure();
   }
-  if (!ptm::agreeAllSucceeded(controller, localError.empty(), localError, message))
+  run.Step(0.02, "Extracting subdomain surfaces");
+  const ptm::TetMeshingOptions options = meshingOptions(this, piece);
+  std::string localError;
+  const ptm::SizeField field = ptm::complexSizeField(
+    this->SizeExpression, input ? input->GetFieldData() : nullptr, localError);
+  if (run.FailedAnywhere(localError) ||
+    // a size that cannot fit: the same decision on every rank
+    run.FailedAnywhere(memoryShortfall(controller, piece, options.maximumVolume)))
   {
-    return fail(message);
-  }
-  const int K = piece.complex.subdomainCount;
-  std::vector<int> mine;
-  for (int s = 0; s < K; ++s)
-  {
-    if (piece.subdomainRank[s] == rank)
-    {
-      mine.push_back(s);
-    }
+    return run.Failure();
   }
 
   // Independent meshing of every owned subdomain.
-  ptm::TetMeshingOptions options;
-  options.radiusEdgeRatio = this->RadiusEdgeRatio;
-  // automatic size: a regular tetrahedron with the input surface's mean edge,
-  // the same for every subdomain, so the density does not depend on K
-  options.maximumVolume = this->MaximumVolume > 0 || !(piece.inputMeanEdgeLength > 0)
-    ? this->MaximumVolume
-    : std::pow(piece.inputMeanEdgeLength, 3) / (6.0 * std::sqrt(2.0));
-  options.minimumDihedralAngle = this->MinimumDihedralAngle;
-  options.extraSwitches = this->ExtraSwitches;
-  const ptm::SizeField field = ptm::complexSizeField(
-    this->SizeExpression, input ? input->GetFieldData() : nullptr, localError);
-  if (!localError.empty())
+  OwnedSubdomains owned(ptm::ownedSubdomains(piece, run.Rank()));
+  ptm::SurfaceRefinementOptions refinement;
+  refinement.size = regularTetrahedronEdge(options.maximumVolume);
+  refinement.minimumAngleDegrees = this->BoundaryMinimumAngle;
+  refinement.coplanarToleranceDegrees = this->CoplanarTolerance;
+  refinement.sizeAt = field.size;
+  const bool refine = this->BoundaryRefinement && options.maximumVolume > 0;
+  localError = meshOwnedSubdomains(this, piece, options, refine ? &refinement : nullptr, field, owned);
+  if (run.FailedAnywhere(localError))
   {
-    return fail(localError); // the same property on every rank, so every rank stops here
+    return run.Failure();
+  }
+  if (run.AbortedAnywhere())
+  {
+    return run.Aborted();
   }
 
-  // Refuse a size that cannot fit, the same decision on every rank.
-  const std::string tooLarge = memoryShortfall(controller, piece, options.maximumVolume);
-  if (!tooLarge.empty())
-  {
-    return fail(tooLarge);
-  }
-  OwnedSubdomains owned(mine);
-  std::vector<ptm::SubdomainSurface>& surfaces = owned.surfaces;
-  std::vector<ptm::TetMesh>& meshes = owned.meshes;
-  for (std::size_t k = 0; k < mine.size() && localError.empty(); ++k)
-  {
-    const int s = mine[k];
-    std::ostringstream where;
-    where << "subdomain " << s << ": ";
-    if (!ptm::extractSubdomainSurface(piece.complex, piece.globalIds, s, surfaces[k], localError))
-    {
-      break;
-    }
-    this->SetProgressText(("Meshing " + where.str()).c_str());
-    const auto start = std::chrono::steady_clock::now();
-    try
-    {
-      ptm::SurfaceRefinementOptions refinement;
-      refinement.size = regularTetrahedronEdge(options.maximumVolume);
-      refinement.minimumAngleDegrees = this->BoundaryMinimumAngle;
-      refinement.coplanarToleranceDegrees = this->CoplanarTolerance;
-      refinement.sizeAt = field.size;
-      const bool refine = this->BoundaryRefinement && options.maximumVolume > 0;
-      MeshedSubdomain m = meshSubdomain(surfaces[k], options, refine ? &refinement : nullptr, field);
-      for (const std::string& w : m.warnings)
-      {
-        vtkWarningMacro(<< where.str() << w);
-      }
-      if (!m.error.empty())
-      {
-        localError = where.str() + m.error;
-        break;
-      }
-      owned.pointsAdded[k] = m.pointsAdded;
-      owned.volumeChange[k] = m.volumeChange;
-      owned.deviation[k] = m.deviation;
-      meshes[k] = std::move(m.mesh);
-    }
-    catch (const std::bad_alloc&)
-    {
-      localError = where.str() + "out of memory while meshing";
-      break;
-    }
-    catch (const std::exception& e)
-    {
-      localError = where.str() + e.what();
-      break;
-    }
-    owned.seconds[k] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    this->UpdateProgress(0.05 + 0.8 * static_cast<double>(k + 1) / mine.size());
-  }
-  if (!ptm::agreeAllSucceeded(controller, localError.empty(), localError, message))
-  {
-    return fail(message);
-  }
-  if (ptm::agreeAnyAborted(controller, this))
-  {
-    output->Initialize();
-    boundary->Initialize();
-    return 1;
-  }
-
-  this->SetProgressText("Numbering");
+  run.Step(0.9, "Numbering");
   ptm::phases::setPhase(controller, "numbering and assembly");
   const MeshTotals totals = gatherTotals(controller, piece, owned);
   const std::vector<long long> lowest = lowestSubdomainOfPoints(controller, piece, owned);
-  this->SetProgressText("Assembling");
-  assembleVolume(owned, totals, piece, lowest, rank, output);
+  run.Step(0.95, "Assembling");
+  assembleVolume(owned, totals, piece, lowest, run.Rank(), output);
   assembleBoundary(owned, totals, boundary);
   ptm::addBoundaryCADFaceIds(input, boundary); // CAD face of every boundary triangle
   addTotals(piece, owned, totals, output->GetFieldData());
   // the same totals on the small boundary port, so a summary can be fetched
   // without gathering the volume mesh onto one process
   boundary->GetFieldData()->ShallowCopy(output->GetFieldData());
-  this->UpdateProgress(1.0);
-  return 1;
+  return run.Done();
 }
 
 void vtkParallelTetMesher::PrintSelf(ostream& os, vtkIndent indent)

@@ -1,11 +1,10 @@
 #include "vtkSurfaceRelaxer.h"
 
 #include "ComplexGather.h"
-#include "PhaseLog.h"
 #include "PipelineRequests.h"
 #include "PolyDataConversion.h"
 #include "PropertyChecks.h"
-#include "RankCollectives.h"
+#include "StageRun.h"
 #include "SurfaceComplexArrays.h"
 #include "SurfaceRelaxation.h"
 
@@ -72,37 +71,8 @@ int vtkSurfaceRelaxer::RequestInformation(
   return 1;
 }
 
-int vtkSurfaceRelaxer::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+std::string vtkSurfaceRelaxer::PropertyError()
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  vtkMultiProcessController* controller = this->Controller;
-  ptm::phases::setPhase(controller, "relax"); // PhaseLog.h
-  const int rank = ptm::rankOf(controller);
-  std::string message, localError;
-  // Every rank takes the same branch: a failure anywhere fails all, an abort
-  // asked on any rank aborts all.
-  auto failedEverywhere = [&]() {
-    if (ptm::agreeAllSucceeded(controller, localError.empty(), localError, message))
-    {
-      return false;
-    }
-    vtkErrorMacro(<< message);
-    output->Initialize();
-    return true;
-  };
-  auto abortedEverywhere = [&]() {
-    if (!ptm::agreeAnyAborted(controller, this))
-    {
-      return false;
-    }
-    output->Initialize();
-    return true;
-  };
-
-  this->UpdateProgress(0.0);
-  // nonsense property values (the same on every rank, so every rank stops)
   ptm::PropertyChecks checks("SurfaceRelaxer");
   checks.Require(this->Mode == KEEP_SURFACE || this->Mode == SMOOTH_SURFACE, "Mode",
     "be 0 (KeepSurface) or 1 (SmoothSurface)", this->Mode);
@@ -117,39 +87,33 @@ int vtkSurfaceRelaxer::RequestData(
     "lie in [0, 180] degrees", this->FeatureAngle);
   checks.Require(this->Region == NEAR_CUTS || this->Region == EVERYWHERE, "Region",
     "be 0 (NearCuts) or 1 (Everywhere)", this->Region);
-  if (!checks.Ok())
-  {
-    vtkErrorMacro(<< checks.Message());
-    output->Initialize();
-    return 0;
-  }
-  this->SetProgressText("Gathering the complex");
-  ptm::ComplexPiece piece;
-  if (!ptm::complexFromPolyData(input, piece, localError))
-  {
-    localError = "SurfaceRelaxer: " + localError;
-  }
-  if (failedEverywhere())
-  {
-    return 0;
-  }
-  ptm::ComplexPiece whole;
-  if (!ptm::allGatherComplex(controller, piece, whole, localError))
-  {
-    localError = "SurfaceRelaxer: " + localError;
-  }
-  if (failedEverywhere())
-  {
-    return 0;
-  }
-  if (abortedEverywhere())
-  {
-    return 1;
-  }
-  this->UpdateProgress(0.2);
-  this->SetProgressText(
-    this->Mode == KEEP_SURFACE ? "Relaxing (keeping the surface)" : "Relaxing (smoothing the surface)");
+  return checks.Ok() ? "" : checks.Message();
+}
 
+int vtkSurfaceRelaxer::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  ptm::StageRun run(this, this->Controller, "SurfaceRelaxer", "relax", { output }); // StageRun.h
+  ptm::ComplexPiece piece, whole;
+  if (run.PropertiesRefused(this->PropertyError()) || !run.ReadPiece(input, piece))
+  {
+    return run.Failure();
+  }
+  run.Step(0.05, "Gathering the complex");
+  std::string localError;
+  ptm::allGatherComplex(this->Controller, piece, whole, localError);
+  if (run.FailedAnywhere(localError))
+  {
+    return run.Failure();
+  }
+  if (run.AbortedAnywhere())
+  {
+    return run.Aborted();
+  }
+  run.Step(0.2,
+    this->Mode == KEEP_SURFACE ? "Relaxing (keeping the surface)" : "Relaxing (smoothing the surface)");
   ptm::RelaxationOptions options;
   options.mode = this->Mode == SMOOTH_SURFACE ? ptm::RelaxationMode::SmoothSurface : ptm::RelaxationMode::KeepSurface;
   options.maximumSurfaceDeviation = this->MaximumSurfaceDeviation;
@@ -161,41 +125,26 @@ int vtkSurfaceRelaxer::RequestData(
   try
   {
     result = ptm::relaxSurfaceComplex(whole.complex, options);
-    localError = result.ok ? "" : "SurfaceRelaxer: " + result.error;
+    localError = result.ok ? "" : result.error;
   }
   catch (const std::exception& e)
   {
-    localError = std::string("SurfaceRelaxer: unexpected failure: ") + e.what();
+    localError = std::string("unexpected failure: ") + e.what();
   }
-  if (failedEverywhere())
+  if (run.FailedAnywhere(localError))
   {
-    return 0;
+    return run.Failure();
   }
-  if (abortedEverywhere())
+  if (run.AbortedAnywhere())
   {
-    return 1;
+    return run.Aborted();
   }
-  this->UpdateProgress(0.9);
-  this->SetProgressText("Writing the complex");
-
-  std::vector<int> mine;
-  for (int s = 0; s < whole.complex.subdomainCount; ++s)
-  {
-    if (whole.subdomainRank[s] == rank)
-    {
-      mine.push_back(s);
-    }
-  }
-  if (mine.empty())
-  {
-    mine.push_back(-1);
-  }
-  ptm::complexToPolyData(whole, mine, output);
+  run.Step(0.9, "Writing the complex");
+  ptm::writeOwnedFaces(whole, run.Rank(), output);
   vtkFieldData* fd = output->GetFieldData();
   addRelaxationFields(fd, result, this->Mode);
   ptm::passOnFieldData(input, fd); // the earlier stages' facts and the size samples
-  this->UpdateProgress(1.0);
-  return 1;
+  return run.Done();
 }
 
 void vtkSurfaceRelaxer::PrintSelf(ostream& os, vtkIndent indent)

@@ -29,6 +29,8 @@
 #include "ParallelTetMesherFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
 
+#include <string>
+
 class vtkMultiProcessController;
 
 class PARALLELTETMESHERFILTERS_EXPORT vtkSurfaceRelaxer : public vtkPolyDataAlgorithm
@@ -96,6 +98,8 @@ protected:
 
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  // The clauses naming every nonsense property value; empty when all are fine.
+  std::string PropertyError();
 
   int Mode = KEEP_SURFACE;
   double MaximumSurfaceDeviation = 0.01;

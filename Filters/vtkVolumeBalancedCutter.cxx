@@ -1,13 +1,13 @@
 #include "vtkVolumeBalancedCutter.h"
 
 #include "CADFaceIds.h"
-#include "PhaseLog.h"
 #include "PipelineRequests.h"
 #include "PolyDataConversion.h"
 #include "PropertyChecks.h"
 #include "RankCollectives.h"
 #include "PredictedCost.h"
 #include "SizeField.h"
+#include "StageRun.h"
 #include "SubdomainAssignment.h"
 #include "SurfaceComplexArrays.h"
 #include "VolumeBalancedDecomposition.h"
@@ -89,7 +89,8 @@ std::vector<double> localSizeSamples(
 
 // Collective: the size field of the cutter (its SizeExpression, or the
 // SizeArray's samples from `sizeSource` or else `input`, whole on every
-// rank); false with the agreed message on every rank when it cannot be made.
+// rank); false with this rank's error when it cannot be made (the caller
+// agrees across ranks).
 bool cutterSizeField(vtkMultiProcessController* controller, const std::string& expression,
   const std::string& arrayName, vtkDataSet* sizeSource, vtkPolyData* input, ptm::SizeSamples& samples,
   ptm::SizeField& field, std::string& error)
@@ -100,17 +101,36 @@ bool cutterSizeField(vtkMultiProcessController* controller, const std::string& e
     return error.empty();
   }
   samples.arrayName = arrayName;
-  std::string localError;
   const std::vector<double> local =
     localSizeSamples(sizeSource ? sizeSource : input, sizeSource ? "SizeSource" : "input surface",
-      arrayName, localError);
-  if (!ptm::agreeAllSucceeded(controller, localError.empty(), localError, error))
-  {
-    return false;
-  }
+      arrayName, error);
+  // collective: every rank takes part, even one whose samples failed (the
+  // caller then agrees to fail)
   samples.xyzh = ptm::wholeValuesOnEveryRank(controller, local);
-  field = ptm::sizeFieldOfSamples(samples, error); // whole samples: the same on every rank
+  if (error.empty())
+  {
+    field = ptm::sizeFieldOfSamples(samples, error); // whole samples: the same on every rank
+  }
   return error.empty();
+}
+
+// The core's options from the filter's properties (K = 0: one per rank).
+ptm::DecompositionOptions decompositionOptions(vtkVolumeBalancedCutter* f, int ranks, const ptm::SizeField& size)
+{
+  ptm::DecompositionOptions options;
+  options.numberOfSubdomains = f->GetNumberOfSubdomains() > 0 ? f->GetNumberOfSubdomains() : ranks;
+  options.strategy = f->GetStrategy() == vtkVolumeBalancedCutter::PARALLEL_PLANES
+    ? ptm::CutStrategy::ParallelPlanes
+    : ptm::CutStrategy::RecursiveBisection;
+  options.direction = static_cast<ptm::CutDirection>(f->GetDirection());
+  options.criterion = static_cast<ptm::BalanceCriterion>(f->GetBalanceCriterion());
+  options.costSize = size.size;
+  options.costMaximumSize = f->GetMaximumSize();
+  options.balanceTolerance = f->GetBalanceTolerance();
+  options.alignmentAngleDegrees = f->GetPlaneAlignmentAngle();
+  options.inputCheck.checkSelfIntersections = f->GetCheckSelfIntersections() != 0;
+  options.inputCheck.selfIntersectionLimit = static_cast<std::size_t>(f->GetSelfIntersectionCheckLimit());
+  return options;
 }
 
 vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values)
@@ -215,59 +235,34 @@ int vtkVolumeBalancedCutter::RequestData(
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkMultiProcessController* controller = this->Controller;
-  ptm::phases::setPhase(controller, "cut"); // PhaseLog.h
-  const int rank = ptm::rankOf(controller);
-  const int ranks = ptm::rankCount(controller);
-  std::string message;
-
-  this->UpdateProgress(0.0);
-  // nonsense property values: the same on every rank, so every rank stops
-  const std::string propertyError = this->PropertyError();
-  if (!propertyError.empty())
+  ptm::StageRun run(this, controller, "VolumeBalancedCutter", "cut", { output }); // StageRun.h
+  if (run.PropertiesRefused(this->PropertyError()))
   {
-    vtkErrorMacro(<< propertyError);
-    output->Initialize();
-    return 0;
+    return run.Failure();
   }
   ptm::SizeSamples samples;
   ptm::SizeField size;
-  if (!cutterSizeField(controller, this->SizeExpression, this->SizeArray,
-        vtkDataSet::GetData(inputVector[1], 0), input, samples, size, message))
+  std::string localError;
+  cutterSizeField(controller, this->SizeExpression, this->SizeArray, vtkDataSet::GetData(inputVector[1], 0),
+    input, samples, size, localError);
+  if (run.FailedAnywhere(localError))
   {
-    vtkErrorMacro("VolumeBalancedCutter: " << message);
-    output->Initialize();
-    return 0;
+    return run.Failure();
   }
-  this->SetProgressText("Gathering the surface");
+  run.Step(0.02, "Gathering the surface");
   const ptm::TriangleSurface local = ptm::triangleSurfaceFromPolyData(input);
   const ptm::TriangleSurface surface = ptm::wholeSurfaceOnEveryRank(controller, local);
   // the CAD face of every input triangle, for the mesher's boundary (CADFaceIds.h)
   const vtkSmartPointer<vtkIdTypeArray> cadFaces =
     ptm::gatherCADFaceTable(controller, input, local.triangles.size(), surface.triangles.size());
-  if (ptm::agreeAnyAborted(controller, this))
+  if (run.AbortedAnywhere())
   {
-    output->Initialize();
-    return 1;
+    return run.Aborted();
   }
-  this->UpdateProgress(0.1);
 
-  ptm::DecompositionOptions options;
-  options.numberOfSubdomains = this->NumberOfSubdomains > 0 ? this->NumberOfSubdomains : ranks;
-  options.strategy = this->Strategy == PARALLEL_PLANES ? ptm::CutStrategy::ParallelPlanes
-                                                       : ptm::CutStrategy::RecursiveBisection;
-  options.direction = static_cast<ptm::CutDirection>(this->Direction);
-  options.criterion = static_cast<ptm::BalanceCriterion>(this->BalanceCriterion);
-  options.costSize = size.size;
-  options.costMaximumSize = this->MaximumSize;
-  options.balanceTolerance = this->BalanceTolerance;
-  options.alignmentAngleDegrees = this->PlaneAlignmentAngle;
-  options.inputCheck.checkSelfIntersections = this->CheckSelfIntersections != 0;
-  options.inputCheck.selfIntersectionLimit =
-    static_cast<std::size_t>(this->SelfIntersectionCheckLimit);
-
-  this->SetProgressText("Cutting");
+  run.Step(0.1, "Cutting");
+  const ptm::DecompositionOptions options = decompositionOptions(this, ptm::rankCount(controller), size);
   ptm::DecompositionResult result;
-  std::string localError;
   try
   {
     if (surface.triangles.empty())
@@ -284,56 +279,37 @@ int vtkVolumeBalancedCutter::RequestData(
   {
     localError = std::string("unexpected failure while cutting: ") + e.what();
   }
-  if (!ptm::agreeAllSucceeded(controller, localError.empty(), localError, message))
+  std::vector<double> predicted;
+  if (localError.empty())
   {
-    vtkErrorMacro("VolumeBalancedCutter failed: " << message);
-    output->Initialize();
-    return 0;
+    predictedCosts(result, size, this->MaximumSize, predicted, localError);
+  }
+  if (run.FailedAnywhere(localError))
+  {
+    return run.Failure();
   }
   for (const std::string& warning : result.warnings)
   {
-    if (rank == 0)
+    if (run.Rank() == 0)
     {
       vtkWarningMacro(<< warning);
     }
   }
-  if (ptm::agreeAnyAborted(controller, this))
+  if (run.AbortedAnywhere())
   {
-    output->Initialize();
-    return 1;
+    return run.Aborted();
   }
-  this->UpdateProgress(0.8);
-  this->SetProgressText("Writing the complex");
 
+  run.Step(0.8, "Writing the complex");
   ptm::ComplexPiece piece;
   piece.subdomainVolume = result.subdomainVolume;
   piece.subdomainMeasure = result.subdomainMeasure;
-  std::vector<double> predicted;
-  if (!predictedCosts(result, size, this->MaximumSize, predicted, localError))
-  {
-    vtkErrorMacro("VolumeBalancedCutter failed: " << localError);
-    output->Initialize();
-    return 0;
-  }
   piece.subdomainRank =
-    ptm::assignSubdomainsToRanks(size ? predicted : result.subdomainMeasure, ranks);
+    ptm::assignSubdomainsToRanks(size ? predicted : result.subdomainMeasure, ptm::rankCount(controller));
   piece.globalPointCount = static_cast<ptm::Index>(result.complex.points.size());
   piece.inputMeanEdgeLength = result.inputMeanEdgeLength;
   piece.complex = std::move(result.complex);
-  std::vector<int> mine;
-  for (int s = 0; s < piece.complex.subdomainCount; ++s)
-  {
-    if (piece.subdomainRank[s] == rank)
-    {
-      mine.push_back(s);
-    }
-  }
-  if (mine.empty())
-  {
-    mine.push_back(-1); // keep nothing: this rank owns no subdomain
-  }
-  ptm::complexToPolyData(piece, mine, output);
-
+  ptm::writeOwnedFaces(piece, run.Rank(), output);
   vtkFieldData* fd = output->GetFieldData();
   addCutterFacts(fd, result, ptm::toString(options.criterion));
   if (size)
@@ -348,9 +324,7 @@ int vtkVolumeBalancedCutter::RequestData(
   {
     ptm::addSizeSamples(fd, samples); // for the triangulator and the mesher (SizeField.h)
   }
-
-  this->UpdateProgress(1.0);
-  return 1;
+  return run.Done();
 }
 
 void vtkVolumeBalancedCutter::PrintSelf(ostream& os, vtkIndent indent)
