@@ -45,21 +45,7 @@ TEST_P(CompatibleSubdomainSurfaces, ClosedManifoldOutwardAndVolumesAddUp)
     for (int s = 0; s < K; ++s)
     {
       const std::vector<Triangle> surface = subdomainTriangles(c, s);
-      std::map<DirectedEdge, int> directed;
-      for (const Triangle& t : surface)
-      {
-        for (int e = 0; e < 3; ++e)
-        {
-          ++directed[{ t[e], t[(e + 1) % 3] }];
-        }
-      }
-      std::size_t bad = 0;
-      for (const auto& [e, n] : directed)
-      {
-        auto reverse = directed.find({ e[1], e[0] });
-        bad += (n != 1 || reverse == directed.end() || reverse->second != 1) ? 1 : 0;
-      }
-      EXPECT_EQ(bad, 0u) << label.str() << ": subdomain " << s << " not closed or not edge-manifold";
+      EXPECT_EQ(badDirectedEdges(surface), 0u) << label.str() << ": subdomain " << s << " not closed or not edge-manifold";
       TriangleSurface closed{ c.points, surface };
       // TetGen can only mesh it if it does not cross itself (exact predicates)
       const SelfIntersectionReport crossing = checkSelfIntersection(closed);

@@ -129,21 +129,7 @@ TEST_P(ContourSubdivision, ShortEdgesSameVolumesClosedSubdomainsSamePointsOnEver
   for (int s = 0; s < K; ++s)
   {
     const std::vector<Triangle> surface = subdomainTriangles(c, s);
-    std::map<DirectedEdge, int> directed;
-    for (const Triangle& t : surface)
-    {
-      for (int e = 0; e < 3; ++e)
-      {
-        ++directed[{ t[e], t[(e + 1) % 3] }];
-      }
-    }
-    std::size_t bad = 0;
-    for (const auto& [e, n] : directed)
-    {
-      auto reverse = directed.find({ e[1], e[0] });
-      bad += (n != 1 || reverse == directed.end() || reverse->second != 1) ? 1 : 0;
-    }
-    EXPECT_EQ(bad, 0u) << label.str() << ": subdomain " << s << " not closed or not edge-manifold";
+    EXPECT_EQ(badDirectedEdges(surface), 0u) << label.str() << ": subdomain " << s << " not closed or not edge-manifold";
     const SelfIntersectionReport crossing = checkSelfIntersection(TriangleSurface{ c.points, surface });
     EXPECT_TRUE(crossing.checked) << label.str() << ": " << crossing.note;
     EXPECT_FALSE(crossing.intersects) << label.str() << ": subdomain " << s << " crosses itself";

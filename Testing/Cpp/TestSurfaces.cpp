@@ -194,6 +194,25 @@ std::vector<NamedSurface> namedTestSurfaces()
   };
 }
 
+std::size_t badDirectedEdges(const std::vector<Triangle>& triangles)
+{
+  std::map<DirectedEdge, int> directed;
+  for (const Triangle& t : triangles)
+  {
+    for (int e = 0; e < 3; ++e)
+    {
+      ++directed[{ t[e], t[(e + 1) % 3] }];
+    }
+  }
+  std::size_t bad = 0;
+  for (const auto& [e, n] : directed)
+  {
+    auto reverse = directed.find({ e[1], e[0] });
+    bad += (n != 1 || reverse == directed.end() || reverse->second != 1) ? 1 : 0;
+  }
+  return bad;
+}
+
 DecompositionOptions stageCaseOptions(int K, CutStrategy strategy)
 {
   DecompositionOptions options;

@@ -21,6 +21,10 @@ TriangleSurface torus(const Vec3& center, double R, double r, int nu, int nv);
 TriangleSurface flipped(const TriangleSurface& s);
 // Both surfaces in one (indices of b shifted).
 TriangleSurface merged(const TriangleSurface& a, const TriangleSurface& b);
+// How many directed edges of a closed, edge-manifold, consistently oriented
+// surface would be wrong: used more than once, or without exactly one
+// reverse (0 for such a surface).
+std::size_t badDirectedEdges(const std::vector<Triangle>& triangles);
 // Volume of a polyhedron inscribed in the sphere / torus is below the exact one;
 // the tests compare against the divergence-theorem volume of the triangles.
 double signedVolume(const TriangleSurface& s);
