@@ -109,37 +109,42 @@ std::vector<Done> triangulateRegions(const ptm::ComplexPiece& piece,
 // and numbers the new points from piece.globalPointCount (advanced past
 // them) in the order of their edges' global ids, which every rank learns:
 // a rank sees only the edges of its own regions, and ids must not depend on
-// which rank holds what. Returns how many points all ranks added.
+// which rank holds what. An edge that any rank finds risky (EdgeSplit) is
+// split by none. Returns how many points all ranks added.
 long long subdivideContours(vtkMultiProcessController* controller, ptm::ComplexPiece& piece,
   const ptm::ContourSubdivisionOptions& options)
 {
-  const std::vector<ptm::EdgeSplit> splits =
-    ptm::interfaceEdgeSplits(piece.complex, piece.globalIds, options);
+  std::vector<ptm::EdgeSplit> splits = ptm::interfaceEdgeSplits(piece.complex, piece.globalIds, options);
   std::vector<long long> mine;
   for (const ptm::EdgeSplit& s : splits)
   {
-    mine.push_back(piece.globalIds[s.ends[0]]);
-    mine.push_back(piece.globalIds[s.ends[1]]);
-    mine.push_back(static_cast<long long>(s.points.size()));
+    mine.insert(mine.end(), { piece.globalIds[s.ends[0]], piece.globalIds[s.ends[1]],
+                              static_cast<long long>(s.points.size()), s.risky ? 1LL : 0LL });
   }
   const std::vector<long long> all = ptm::allGatherValues(controller, mine);
-  std::map<std::pair<long long, long long>, long long> firstId; // edge -> its points' count, then first id
-  for (std::size_t k = 0; k + 2 < all.size(); k += 3)
+  // edge -> its points' count (0 where any rank found it risky), then first id
+  std::map<std::pair<long long, long long>, long long> firstId;
+  for (std::size_t k = 0; k + 3 < all.size(); k += 4)
   {
-    firstId[{ all[k], all[k + 1] }] = all[k + 2];
+    auto [it, inserted] = firstId.emplace(std::make_pair(all[k], all[k + 1]), all[k + 2]);
+    it->second = all[k + 3] ? 0 : it->second;
   }
   long long next = piece.globalPointCount;
   for (auto& [edge, countThenId] : firstId)
   {
     const long long count = countThenId;
-    countThenId = next;
+    countThenId = count > 0 ? next : -1;
     next += count;
+  }
+  for (ptm::EdgeSplit& s : splits)
+  {
+    s.risky = firstId.at({ piece.globalIds[s.ends[0]], piece.globalIds[s.ends[1]] }) < 0;
   }
   ptm::applyEdgeSplits(piece.complex, splits);
   for (const ptm::EdgeSplit& s : splits)
   {
     long long id = firstId.at({ piece.globalIds[s.ends[0]], piece.globalIds[s.ends[1]] });
-    for (std::size_t i = 0; i < s.points.size(); ++i)
+    for (std::size_t i = 0; i < s.points.size() && !s.risky; ++i)
     {
       piece.globalIds.push_back(id++);
     }

@@ -41,6 +41,121 @@ std::vector<Vec3> splitPoints(const Vec3& from, const Vec3& to, const ContourSub
   return points;
 }
 
+// sin of the angle under which a face on a split edge makes the split risky
+// (EdgeSplit::risky): far above the 1e-13 or so at which one rounding of a
+// split point can push a face across its neighbour, far below the angles of
+// faces that merely meet the plane at a slant
+constexpr double kRiskySine = 1e-6;
+
+double sineBetween(const Vec3& unitA, const Vec3& b)
+{
+  const double length = norm(b);
+  return length > 0 ? norm(cross(unitA, b)) / length : 0.0;
+}
+
+// Whether a region may not take new boundary points because of a vertex the
+// cut snapped onto its plane (within its clearance, PlaneAlignment.h)
+// without moving it: the interface is slightly bent there, and the cutter
+// checked the subdomains against self-intersection with the region
+// triangulated from its boundary as it was. New boundary points change that
+// triangulation, and a bent interface triangle may then cross a surface
+// triangle that leaves the snapped vertex at a shallow angle to the plane
+// (CGAL's rotor from the corpus, 16 parallel planes: a vertex 0.1 size off
+// the plane, a surface triangle at 4.9 degrees to it). So a region is
+// refused when one of its snapped vertices has a surface triangle within
+// 30 degrees of the plane. A rank sees only its own subdomain's triangles,
+// which is why the caller joins every rank's verdict.
+bool bentNearShallowFace(const SurfaceComplex& c, const InterfaceRegion& region,
+  const std::map<Index, std::vector<Index>>& surfaceTrianglesAt)
+{
+  const CuttingPlane& plane = c.planes[region.planeId];
+  double scale = 0;
+  for (const DirectedEdge& e : region.edges)
+  {
+    const Vec3& p = c.points[e[0]];
+    scale = std::max({ scale, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2]) });
+  }
+  for (const DirectedEdge& e : region.edges)
+  {
+    auto at = surfaceTrianglesAt.find(e[0]);
+    if (at == surfaceTrianglesAt.end() ||
+      !(std::fabs(dot(c.points[e[0]] - plane.origin, plane.normal)) > 1e-12 * scale))
+    {
+      continue; // on the plane but for the rounding of a cut point
+    }
+    for (Index t : at->second)
+    {
+      const Triangle& tri = c.triangles[t];
+      const Vec3 normal = cross(c.points[tri[1]] - c.points[tri[0]], c.points[tri[2]] - c.points[tri[0]]);
+      if (sineBetween(plane.normal, normal) < 0.5)
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+// Marks the splits whose edge lies on a region bent near a shallow face, or has
+// a surface triangle or a second plane within kRiskySine of one of its
+// regions' planes.
+void markRisky(const SurfaceComplex& c, std::map<UndirectedEdge, EdgeSplit>& byPoints)
+{
+  std::map<Index, std::vector<Index>> surfaceTrianglesAt;
+  for (std::size_t t = 0; t < c.triangles.size(); ++t)
+  {
+    for (Index v : c.triangles[t])
+    {
+      surfaceTrianglesAt[v].push_back(static_cast<Index>(t));
+    }
+  }
+  std::map<UndirectedEdge, std::vector<int>> planesOf;
+  for (const InterfaceRegion& region : c.interfaces)
+  {
+    const bool snapped = bentNearShallowFace(c, region, surfaceTrianglesAt);
+    for (const DirectedEdge& e : region.edges)
+    {
+      auto it = byPoints.find(undirected(e[0], e[1]));
+      if (it != byPoints.end())
+      {
+        it->second.risky = it->second.risky || snapped;
+        std::vector<int>& planes = planesOf[it->first];
+        if (std::find(planes.begin(), planes.end(), region.planeId) == planes.end())
+        {
+          planes.push_back(region.planeId);
+        }
+      }
+    }
+  }
+  for (const auto& [edge, planes] : planesOf)
+  {
+    for (std::size_t i = 0; i < planes.size(); ++i)
+    {
+      for (std::size_t j = i + 1; j < planes.size(); ++j)
+      {
+        byPoints[edge].risky = byPoints[edge].risky ||
+          sineBetween(c.planes[planes[i]].normal, c.planes[planes[j]].normal) < kRiskySine;
+      }
+    }
+  }
+  for (const Triangle& t : c.triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      auto it = planesOf.find(undirected(t[k], t[(k + 1) % 3]));
+      if (it == planesOf.end())
+      {
+        continue;
+      }
+      const Vec3 normal = cross(c.points[t[1]] - c.points[t[0]], c.points[t[2]] - c.points[t[0]]);
+      for (int plane : it->second)
+      {
+        byPoints[it->first].risky = byPoints[it->first].risky || sineBetween(c.planes[plane].normal, normal) < kRiskySine;
+      }
+    }
+  }
+}
+
 // Complex indices of a split's points, from its end `a` to the other.
 std::vector<Index> chainFrom(Index a, const EdgeSplit& split, Index firstPoint)
 {
@@ -88,24 +203,29 @@ void fanTriangle(SurfaceComplex& c, std::size_t t, int k, const std::vector<Inde
 std::vector<EdgeSplit> interfaceEdgeSplits(
   const SurfaceComplex& complex, const std::vector<Index>& globalIds, const ContourSubdivisionOptions& options)
 {
-  std::map<UndirectedEdge, EdgeSplit> byIds; // keyed by the ends' global ids
+  std::map<UndirectedEdge, EdgeSplit> byPoints; // keyed by the ends' complex indices
   for (const InterfaceRegion& region : complex.interfaces)
   {
     for (const DirectedEdge& e : region.edges)
     {
       const bool firstSmaller = globalIds[e[0]] < globalIds[e[1]];
       const Index a = firstSmaller ? e[0] : e[1], b = firstSmaller ? e[1] : e[0];
-      const UndirectedEdge key{ globalIds[a], globalIds[b] };
-      if (byIds.count(key))
+      if (byPoints.count(undirected(a, b)))
       {
         continue;
       }
       std::vector<Vec3> points = splitPoints(complex.points[a], complex.points[b], options);
       if (!points.empty())
       {
-        byIds[key] = EdgeSplit{ { a, b }, std::move(points) };
+        byPoints[undirected(a, b)] = EdgeSplit{ { a, b }, std::move(points) };
       }
     }
+  }
+  markRisky(complex, byPoints);
+  std::map<UndirectedEdge, EdgeSplit> byIds; // sorted by the ends' global ids
+  for (auto& [key, split] : byPoints)
+  {
+    byIds[{ globalIds[split.ends[0]], globalIds[split.ends[1]] }] = std::move(split);
   }
   std::vector<EdgeSplit> splits;
   splits.reserve(byIds.size());
@@ -121,6 +241,10 @@ void applyEdgeSplits(SurfaceComplex& c, const std::vector<EdgeSplit>& splits)
   std::map<UndirectedEdge, std::pair<const EdgeSplit*, Index>> splitOf; // the split and its first point
   for (const EdgeSplit& s : splits)
   {
+    if (s.risky)
+    {
+      continue;
+    }
     splitOf[undirected(s.ends[0], s.ends[1])] = { &s, static_cast<Index>(c.points.size()) };
     c.points.insert(c.points.end(), s.points.begin(), s.points.end());
   }

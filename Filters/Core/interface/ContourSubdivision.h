@@ -23,7 +23,10 @@
 //  never under size / 1000), at a + (i / n) (b - a), i = 1 .. n - 1, a being
 //  the end with the smaller global id. So they lie on the edge up to one
 //  rounding: on the input triangle the edge crosses, and in the plane.
-//  Applied: the points are appended in the order of the splits; every region
+//  Not split: an edge of a region bent at a snapped vertex next to a shallow
+//  surface triangle, or where a face on it nearly continues the plane
+//  (EdgeSplit::risky). Applied: the points are appended in the order of the
+//  splits; every region
 //  edge becomes its chain; every triangle with a split edge becomes a fan
 //  from the corner across that edge (one edge at a time, so a triangle with
 //  two split edges is fanned twice, never into a flat triangle). The volume
@@ -45,16 +48,32 @@ struct EdgeSplit
 {
   std::array<Index, 2> ends; // complex points; ends[0] has the smaller global id
   std::vector<Vec3> points;  // from ends[0] to ends[1], strictly between them
+  // Splitting it could make a subdomain surface cross itself, which the
+  // cutter checked for with the loops as they were:
+  //  * a region on the edge has a vertex that the cut snapped onto its plane
+  //    without moving it, so the interface is bent there, and a surface
+  //    triangle within 30 degrees of the plane at that vertex: a new
+  //    triangulation of the region may cross it (CGAL's rotor from the
+  //    corpus, 16 parallel planes);
+  //  * a surface triangle on the edge, or a second plane through it, lies
+  //    within about 1e-6 radians of the edge's plane: the new points lie on
+  //    the edge only up to one rounding, enough for a face to overlap one that
+  //    nearly continues it.
+  // Each rank judges only the faces it holds, so a caller with several ranks
+  // splits an edge only if no rank finds it risky.
+  bool risky = false;
 };
 
 // The split of every region edge that needs one, each edge once, sorted by
-// the global ids of its ends.
+// the global ids of its ends, each judged risky or not by the faces held.
 std::vector<EdgeSplit> interfaceEdgeSplits(const SurfaceComplex& complex, const std::vector<Index>& globalIds,
   const ContourSubdivisionOptions& options);
 
-// Appends the split points to complex.points (split k's points after those
-// of splits 0 .. k-1) and rewires the regions' edges and the triangles
-// (their pairs, source faces and planes copied to the fan's triangles).
+// Applies the splits that are not risky (a caller with several ranks marks
+// an edge risky where any rank found it so): appends their points to
+// complex.points (split k's points after those of the splits before it) and
+// rewires the regions' edges and the triangles (their pairs, source faces and
+// planes copied to the fan's triangles).
 void applyEdgeSplits(SurfaceComplex& complex, const std::vector<EdgeSplit>& splits);
 } // namespace ptm
 #endif
