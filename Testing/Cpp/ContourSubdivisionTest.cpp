@@ -153,6 +153,7 @@ TEST(ContourSubdivisionRule, ShortEdgesStayAndTheFieldRefines)
   options.size = 1.0;
   SurfaceComplex c;
   c.points = { { 0, 0, 0 }, { 1.4, 0, 0 }, { 1.4, 3.0, 0 } };
+  c.planes.push_back({ { 0, 0, 0 }, { 0, 0, 1 }, 2 }); // the region's plane: z = 0
   c.interfaces.push_back({ 0, { 0, 1 }, { { 0, 1 }, { 1, 2 }, { 2, 0 } } });
   const std::vector<Index> ids{ 0, 1, 2 };
   std::vector<EdgeSplit> splits = interfaceEdgeSplits(c, ids, options);
