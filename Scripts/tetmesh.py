@@ -86,8 +86,13 @@ def parse_arguments(argv):
 
 
 def find_plugin(explicit):
-    candidates = [explicit] if explicit else []
-    candidates += [os.environ.get("PTM_PLUGIN", ""),
+    # a path the user named is used or refused, never silently replaced by
+    # the build tree's plugin (which may be another version)
+    if explicit:
+        if not os.path.isfile(explicit):
+            raise SystemExit("error: --plugin %s: no such file" % explicit)
+        return os.path.abspath(explicit)
+    candidates = [os.environ.get("PTM_PLUGIN", ""),
                    os.path.join(HERE, "..", "build", "lib", "paraview-plugins", "ParallelTetMesher",
                                 "ParallelTetMesher.so")]
     for c in candidates:
