@@ -47,6 +47,7 @@ struct PlaneSplitStats
 {
   std::size_t splitTriangles = 0;
   std::size_t snappedPoints = 0; // vertices off the plane treated as on it
+  std::size_t unsnappedPoints = 0; // ... not, after all: their neighbours all lay across the plane
   std::size_t movedOntoPlane = 0; // ... of them moved onto it along one of their edges
   std::size_t chordPoints = 0;   // new points on lines where two planes meet
   // edges split within 10 % / 1 % of their length from an end: the contour
