@@ -24,6 +24,7 @@ constexpr const char* BalanceCriterionName = "BalanceCriterion";   // string
 constexpr const char* MaximumImbalance = "MaximumImbalance";       // double
 constexpr const char* InputRepairs = "InputRepairs";               // strings: repairs of the input check
 constexpr const char* AlignedCuts = "AlignedCuts";                 // 2 ints: cuts turned parallel to an earlier line, and through it
+constexpr const char* TiltedCuts = "TiltedCuts";                   // int: cuts tilted to a clearer plane
 constexpr const char* InputMeanEdgeLength = "InputMeanEdgeLength"; // double: the input surface's resolution
 // the cutter's SizeArray (SizeField.h): double x4 per sample (x, y, z, size), and the array's name
 constexpr const char* SizeFieldSamples = "SizeFieldSamples";
@@ -36,12 +37,22 @@ constexpr const char* CADFaceId = "CADFaceId"; // cell data, vtkIdType: index in
 // its boundary port
 constexpr const char* SourceFaceCADFaceId = "SourceFaceCADFaceId";
 
+// the interface triangulator's figures (vtkIdType each, the last a double)
+constexpr const char* ContourPointsAdded = "ContourPointsAdded";
+constexpr const char* InterfacesTriangulatedAgain = "InterfacesTriangulatedAgain"; // bent ones that crossed the surface
+constexpr const char* InterfaceNewPoints = "InterfaceNewPoints";
+constexpr const char* InterfaceTrianglesBelowMinimumAngle = "InterfaceTrianglesBelowMinimumAngle";
+constexpr const char* InterfaceTrianglesBelowMinimumAngleAwayFromBoundary =
+  "InterfaceTrianglesBelowMinimumAngleAwayFromBoundary";
+constexpr const char* EncroachedBoundarySegments = "EncroachedBoundarySegments";
+constexpr const char* InterfaceMinimumAngle = "InterfaceMinimumAngle";
+
 // The facts of earlier stages that every later stage copies from its input's
 // field data to its output's (PolyDataConversion.h: passOnFieldData).
 constexpr const char* PassedOn[] = { BalanceCriterionName, MaximumImbalance, SourceFaceCADFaceId,
-  SizeFieldSamples, SizeFieldArray, "ContourPointsAdded", "InterfaceNewPoints", "InterfaceTrianglesBelowMinimumAngle",
-  "InterfaceTrianglesBelowMinimumAngleAwayFromBoundary", "EncroachedBoundarySegments",
-  "InterfaceMinimumAngle" };
+  SizeFieldSamples, SizeFieldArray, ContourPointsAdded, InterfacesTriangulatedAgain, InterfaceNewPoints,
+  InterfaceTrianglesBelowMinimumAngle, InterfaceTrianglesBelowMinimumAngleAwayFromBoundary,
+  EncroachedBoundarySegments, InterfaceMinimumAngle };
 
 // field data of vtkAlphaWrapFilter's output (absolute lengths)
 constexpr const char* WrapAlpha = "WrapAlpha";

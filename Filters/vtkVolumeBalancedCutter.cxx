@@ -128,6 +128,7 @@ ptm::DecompositionOptions decompositionOptions(vtkVolumeBalancedCutter* f, int r
   options.costMaximumSize = f->GetMaximumSize();
   options.balanceTolerance = f->GetBalanceTolerance();
   options.alignmentAngleDegrees = f->GetPlaneAlignmentAngle();
+  options.tiltDegrees = f->GetPlaneTiltAngle();
   options.inputCheck.checkSelfIntersections = f->GetCheckSelfIntersections() != 0;
   options.inputCheck.selfIntersectionLimit = static_cast<std::size_t>(f->GetSelfIntersectionCheckLimit());
   return options;
@@ -160,6 +161,10 @@ void addCutterFacts(vtkFieldData* fd, const ptm::DecompositionResult& result, co
   const int alignedCounts[2] = { result.alignedNormals, result.alignedLines };
   aligned->InsertNextTypedTuple(alignedCounts);
   fd->AddArray(aligned);
+  vtkNew<vtkIntArray> tilted;
+  tilted->SetName(ptm::arrays::TiltedCuts);
+  tilted->InsertNextValue(result.tiltedCuts);
+  fd->AddArray(tilted);
   vtkNew<vtkStringArray> repairs;
   repairs->SetName(ptm::arrays::InputRepairs);
   for (const std::string& warning : result.warnings)
@@ -220,6 +225,8 @@ std::string vtkVolumeBalancedCutter::PropertyError()
     "BalanceTolerance", "lie in [1e-6, 0.5]", this->BalanceTolerance);
   checks.Require(this->PlaneAlignmentAngle >= 0 && this->PlaneAlignmentAngle <= 45,
     "PlaneAlignmentAngle", "lie in [0, 45] degrees", this->PlaneAlignmentAngle);
+  checks.Require(this->PlaneTiltAngle >= 0 && this->PlaneTiltAngle <= 30,
+    "PlaneTiltAngle", "lie in [0, 30] degrees", this->PlaneTiltAngle);
   checks.Require(this->MaximumSize >= 0 && std::isfinite(this->MaximumSize), "MaximumSize",
     "be 0 (automatic) or a positive length", this->MaximumSize);
   checks.Require(this->SelfIntersectionCheckLimit >= 0, "SelfIntersectionCheckLimit",
@@ -336,6 +343,7 @@ void vtkVolumeBalancedCutter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BalanceCriterion: " << this->BalanceCriterion << "\n";
   os << indent << "BalanceTolerance: " << this->BalanceTolerance << "\n";
   os << indent << "PlaneAlignmentAngle: " << this->PlaneAlignmentAngle << "\n";
+  os << indent << "PlaneTiltAngle: " << this->PlaneTiltAngle << "\n";
   os << indent << "CheckSelfIntersections: " << this->CheckSelfIntersections << "\n";
   os << indent << "SelfIntersectionCheckLimit: " << this->SelfIntersectionCheckLimit << "\n";
   os << indent << "SizeExpression: " << this->SizeExpression << "\n";

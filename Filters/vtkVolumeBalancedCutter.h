@@ -99,6 +99,14 @@ public:
   ///@}
 
   ///@{
+  /// Recursive bisection: a plane that would pass a hair off vertices or
+  /// cross faces at a shallow angle may tilt by up to this angle to a
+  /// clearer, still balanced position (default 10 degrees; 0 turns this off).
+  vtkSetMacro(PlaneTiltAngle, double);
+  vtkGetMacro(PlaneTiltAngle, double);
+  ///@}
+
+  ///@{
   /// Check the input for self-intersections with CGAL's exact predicates
   /// before cutting (default on). Other input checks always run.
   vtkSetMacro(CheckSelfIntersections, vtkTypeBool);
@@ -170,6 +178,7 @@ protected:
   int BalanceCriterion = VOLUME;
   double BalanceTolerance = 0.01;
   double PlaneAlignmentAngle = 15.0;
+  double PlaneTiltAngle = 10.0;
   vtkTypeBool CheckSelfIntersections = 1;
   vtkIdType SelfIntersectionCheckLimit = 2000000;
   std::string SizeExpression;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace ptm
@@ -76,5 +77,32 @@ inline double boundingBoxDiagonal(const std::vector<Vec3>& points)
   }
   return norm(hi - lo);
 }
+
+// Axis-aligned box of some points, for a cheap overlap test (empty: lo > hi).
+struct Box
+{
+  Vec3 lo{ std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+    std::numeric_limits<double>::infinity() };
+  Vec3 hi{ -lo[0], -lo[1], -lo[2] };
+  void add(const Vec3& p)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = std::min(lo[k], p[k]);
+      hi[k] = std::max(hi[k], p[k]);
+    }
+  }
+  bool overlaps(const Box& o) const
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      if (hi[k] < o.lo[k] || o.hi[k] < lo[k])
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+};
 } // namespace ptm
 #endif

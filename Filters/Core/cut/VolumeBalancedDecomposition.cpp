@@ -45,6 +45,12 @@ const char* toString(BalanceCriterion c)
 
 namespace
 {
+// Clearances (PlaneClearance) for choosing a tilted normal: 0.5 is as clear
+// as the search asks for; from 0.2 on the proposed normal is kept unsearched;
+// a tilted one must be 1.5 times as clear to replace it.
+constexpr double kEnoughClearance = 0.5;
+constexpr double kGoodClearance = 0.2;
+constexpr double kClearlyBetter = 1.5;
 // Measure of each final subdomain by the criterion.
 std::vector<double> measureSubdomains(const SurfaceComplex& c, BalanceCriterion criterion,
   const std::vector<double>& volumes)
@@ -115,35 +121,12 @@ std::string optionError(const DecompositionOptions& options)
   {
     return "the plane alignment angle must lie in [0, 45] degrees";
   }
+  if (!(options.tiltDegrees >= 0 && options.tiltDegrees <= 30))
+  {
+    return "the plane tilt angle must lie in [0, 30] degrees";
+  }
   return std::string();
 }
-
-// Axis-aligned box of some points, for a cheap overlap test.
-struct Box
-{
-  Vec3 lo{ std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-    std::numeric_limits<double>::infinity() };
-  Vec3 hi{ -lo[0], -lo[1], -lo[2] };
-  void add(const Vec3& p)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      lo[k] = std::min(lo[k], p[k]);
-      hi[k] = std::max(hi[k], p[k]);
-    }
-  }
-  bool overlaps(const Box& o) const
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      if (hi[k] < o.lo[k] || o.hi[k] < lo[k])
-      {
-        return false;
-      }
-    }
-    return true;
-  }
-};
 
 // Whether labelled volumes that should add up to `whole` do, up to the
 // round-off of the divergence sums: relative to each term (bounded by
@@ -330,6 +313,8 @@ struct PartCut
 
   Trial tryCut(const Vec3& n, double at, double snap);
   Trial clearestBalancedCut(const Vec3& n, Trial&& balanced, double& at);
+  double predictedClearance(const Vec3& n) const;
+  Vec3 clearerNormal(const Vec3& normal, const NearlyContinuedLine& continued) const;
   Trial balancedCut(const Vec3& n, double& at, bool& tooThin);
   bool interfacesValid(const Trial& trial) const;
   bool soundParts(const Trial& trial) const;
@@ -464,6 +449,74 @@ Trial PartCut::clearestBalancedCut(const Vec3& n, Trial&& balanced, double& at)
     return moved;
   }
   return std::move(balanced);
+}
+
+// The clearance (PlaneClearance) the cut with normal n can reach, predicted
+// without splitting: the balanced offset from the measure function, the
+// budget window of clearestBalancedCut around it (its width from the
+// measure's slope, the cross-section area), and the clearest offset in it.
+// Below 0 where the plane would miss the part.
+double PartCut::predictedClearance(const Vec3& n) const
+{
+  const HalfSpaceMeasure measure(c, cell, n, options.criterion);
+  const double at = measure.offsetForFraction(fraction, solveTolerance);
+  const double span = measure.maximumOffset() - measure.minimumOffset();
+  if (!(at > measure.minimumOffset() && at < measure.maximumOffset()) || !(span > 0))
+  {
+    return -1.0;
+  }
+  const double step = 1e-4 * span;
+  const double area = (measure.below(at + step) - measure.below(at - step)) / (2.0 * step);
+  const double budget = 0.8 * allowed / (1.0 + std::log(static_cast<double>(parts)));
+  const double half = area > 0 ? std::min(budget / area, 0.5 * span) : 0.0;
+  const PlaneClearance clearance(c, cell, n);
+  return std::min(kEnoughClearance,
+    clearance.at(clearance.clearestOffset(at - half, at + half, at, kEnoughClearance)));
+}
+
+// Tilting a plane by a few degrees keeps its parts balanced and nearly as
+// compact, but can take it off the faces it would cross at a shallow angle
+// and off the points it would pass a hair from: on the triple torus at
+// K = 64 (recursive bisection), 21 of 63 cuts had a clearance under 0.05,
+// and the worst tetrahedra (0.008 degrees) lay in the wedge where a cut
+// crossed an input edge running at 0.29 degrees to it. When the proposed
+// normal's clearance is poor, normals tilted by up to tiltDegrees in eight
+// directions are scored by predictedClearance, and the clearest one is
+// taken if it is clearly better. A normal turned parallel to an earlier
+// line (PlaneAlignment) is kept: tilted about that line, it made interface
+// triangles with angles of 1e-13 degrees on the unit tests' surfaces.
+Vec3 PartCut::clearerNormal(const Vec3& normal, const NearlyContinuedLine& continued) const
+{
+  if (!volumeCriterion || !(options.tiltDegrees > 0) || continued.found)
+  {
+    return normal;
+  }
+  double bestScore = predictedClearance(normal);
+  if (bestScore >= kGoodClearance)
+  {
+    return normal;
+  }
+  Vec3 u{ 0, 0, 0 }, v{ 0, 0, 0 };
+  planeBasis(normal, u, v);
+  const int directions = 8;
+  Vec3 best = normal;
+  for (double fraction : { 0.3, 0.6, 1.0 })
+  {
+    const double tilt = fraction * options.tiltDegrees * kPi / 180.0;
+    for (int k = 0; k < directions; ++k)
+    {
+      const double azimuth = 2.0 * kPi * k / directions;
+      const Vec3 sideways = std::cos(azimuth) * u + std::sin(azimuth) * v;
+      const Vec3 n = normalized(std::cos(tilt) * normal + std::sin(tilt) * sideways);
+      const double score = predictedClearance(n);
+      if (score > kClearlyBetter * bestScore && score > bestScore)
+      {
+        bestScore = score;
+        best = n;
+      }
+    }
+  }
+  return best;
 }
 
 // The balanced cut with normal n: the offset from the measure function,
@@ -759,7 +812,9 @@ bool PartCut::run(const Vec3& proposedNormal, std::string& error)
   // never cross at a tiny angle (PlaneAlignment.h).
   const NearlyContinuedLine continued =
     findNearlyContinuedLine(c, cell, proposedNormal, options.alignmentAngleDegrees);
-  const Vec3 normal = continued.found ? continued.parallelNormal : proposedNormal;
+  const Vec3 normal =
+    clearerNormal(continued.found ? continued.parallelNormal : proposedNormal, continued);
+  result.tiltedCuts += normal != proposedNormal && !continued.found ? 1 : 0;
 
   double bestOffset = 0;
   bool tooThin = false;
@@ -874,6 +929,10 @@ bool Cutting::cut(int cell, const Vec3& proposedNormal, double fraction, int par
   below = nextCell++;
   above = nextCell++;
   DecompositionOptions partOptions = options;
+  if (options.strategy == CutStrategy::ParallelPlanes)
+  {
+    partOptions.tiltDegrees = 0; // tilted, the planes would meet inside the object
+  }
   if (cutsByCost(options))
   {
     const double costFraction = fraction;

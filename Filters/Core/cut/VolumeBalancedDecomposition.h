@@ -42,6 +42,10 @@ struct DecompositionOptions
   // already drawn there turns to run parallel to it, or along it
   // (PlaneAlignment.h); 0 turns that off
   double alignmentAngleDegrees = 15.0;
+  // a recursive-bisection plane that would pass a hair from points or cross
+  // faces at a shallow angle may tilt by up to this angle (degrees) to a
+  // clearer, still balanced position; 0 keeps every normal as proposed
+  double tiltDegrees = 10.0;
   InputCheckOptions inputCheck;   // see SurfaceInputCheck.h
   // BalanceCriterion::PredictedCost: the size field whose tetrahedra are
   // balanced (empty: a uniform size, which balances volume), no larger than
@@ -71,6 +75,7 @@ struct DecompositionResult
   int alignedLines = 0;                 // ... and then turned about that line, drawing the same line
   int rejectedCuts = 0;                 // cuts whose parts crossed themselves, replaced by another
   int clearedPlanes = 0;                // cuts moved within the balance budget away from points (PlaneClearance)
+  int tiltedCuts = 0;                   // cuts tilted to a clearer normal (tiltDegrees)
 };
 
 // The input triangles may be unmerged (STL); `sourceFaces` of the result
