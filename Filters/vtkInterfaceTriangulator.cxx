@@ -1,5 +1,6 @@
 #include "vtkInterfaceTriangulator.h"
 
+#include "BentRegionCheck.h"
 #include "ContourSubdivision.h"
 #include "InterfaceTriangulation.h"
 #include "PipelineRequests.h"
@@ -25,7 +26,9 @@
 #include <cmath>
 #include <exception>
 #include <functional>
+#include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 #include <tuple>
 
@@ -47,6 +50,7 @@ struct RegionFigures
 
 struct Done
 {
+  std::size_t region = 0; // index into the piece's interfaces
   RegionKey key;
   std::vector<ptm::Index> pointOfLocal; // region point -> piece point
   ptm::InterfaceTriangulation triangulation;
@@ -57,52 +61,124 @@ struct Done
 // Every region of the piece triangulated from canonically ordered input
 // (its points by global id, its edges sorted), so both ranks that hold a
 // region get the same triangles. On a failure `error` names the region.
+// Triangulates region `index` of the piece into `d`; false with `error`
+// naming the region if it cannot be.
+bool triangulateRegion(const ptm::ComplexPiece& piece, std::size_t index,
+  const ptm::InterfaceTriangulationOptions& options, Done& d, std::string& error)
+{
+  const ptm::SurfaceComplex& c = piece.complex;
+  const ptm::InterfaceRegion& region = c.interfaces[index];
+  d.region = index;
+  d.planeId = region.planeId;
+  d.pair = region.pair;
+  d.key = RegionKey(region.planeId, region.pair[0], region.pair[1]);
+  std::vector<ptm::Index> points;
+  for (const auto& e : region.edges)
+  {
+    points.push_back(e[0]);
+    points.push_back(e[1]);
+  }
+  std::sort(points.begin(), points.end(),
+    [&](ptm::Index a, ptm::Index b) { return piece.globalIds[a] < piece.globalIds[b]; });
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  ptm::PlanarRegion planar = ptm::planarRegionOf(c, region, points);
+  std::sort(planar.edges.begin(), planar.edges.end());
+  try
+  {
+    ptm::InterfaceTriangulationResult r = ptm::triangulateInterface(planar, options);
+    if (!r.ok)
+    {
+      std::ostringstream msg;
+      msg << "interface on plane " << region.planeId << " between subdomains " << region.pair[0]
+          << " and " << region.pair[1] << ": " << r.error;
+      error = msg.str();
+      return false;
+    }
+    d.triangulation = std::move(r.triangulation);
+  }
+  catch (const std::exception& e)
+  {
+    error = std::string("interface triangulation failed: ") + e.what();
+    return false;
+  }
+  d.pointOfLocal = std::move(points);
+  return true;
+}
+
 std::vector<Done> triangulateRegions(const ptm::ComplexPiece& piece,
   const ptm::InterfaceTriangulationOptions& options, std::string& error,
   const std::function<void(double)>& progress)
 {
   const ptm::SurfaceComplex& c = piece.complex;
   std::vector<Done> done;
-  for (const ptm::InterfaceRegion& region : c.interfaces)
+  for (std::size_t index = 0; index < c.interfaces.size(); ++index)
   {
     Done d;
-    d.planeId = region.planeId;
-    d.pair = region.pair;
-    d.key = RegionKey(region.planeId, region.pair[0], region.pair[1]);
-    std::vector<ptm::Index> points;
-    for (const auto& e : region.edges)
+    if (!triangulateRegion(piece, index, options, d, error))
     {
-      points.push_back(e[0]);
-      points.push_back(e[1]);
-    }
-    std::sort(points.begin(), points.end(),
-      [&](ptm::Index a, ptm::Index b) { return piece.globalIds[a] < piece.globalIds[b]; });
-    points.erase(std::unique(points.begin(), points.end()), points.end());
-    ptm::PlanarRegion planar = ptm::planarRegionOf(c, region, points);
-    std::sort(planar.edges.begin(), planar.edges.end());
-    try
-    {
-      ptm::InterfaceTriangulationResult r = ptm::triangulateInterface(planar, options);
-      if (!r.ok)
-      {
-        std::ostringstream msg;
-        msg << "interface on plane " << region.planeId << " between subdomains " << region.pair[0]
-            << " and " << region.pair[1] << ": " << r.error;
-        error = msg.str();
-        break;
-      }
-      d.triangulation = std::move(r.triangulation);
-    }
-    catch (const std::exception& e)
-    {
-      error = std::string("interface triangulation failed: ") + e.what();
       break;
     }
-    d.pointOfLocal = points;
     done.push_back(std::move(d));
     progress(static_cast<double>(done.size()) / c.interfaces.size());
   }
   return done;
+}
+
+// Regions bent through snapped vertices whose triangulation crosses the
+// surface of a subdomain they bound (BentRegionCheck.h) are triangulated
+// again, less refined each time: first unsmoothed (the triangulation the
+// cutter checked its cuts with, when the sizes agree), then with no points
+// inside but what the quality of 1 degree needs. Every rank learns every
+// flagged region, so both sides of a region take the same fall-back. A
+// region still crossing after both is left to the mesher, which names the
+// subdomain. Returns the number of regions triangulated again.
+long long retriangulateCrossingRegions(vtkMultiProcessController* controller,
+  const ptm::ComplexPiece& piece, const ptm::InterfaceTriangulationOptions& options,
+  std::vector<Done>& done)
+{
+  ptm::InterfaceTriangulationOptions unsmoothed = options;
+  unsmoothed.smooth = false;
+  ptm::InterfaceTriangulationOptions cover = unsmoothed;
+  cover.minimumAngleDegrees = 1.0;
+  cover.maximumEdgeLength = std::numeric_limits<double>::max();
+  cover.sizeAt = {};
+  long long redone = 0;
+  for (const ptm::InterfaceTriangulationOptions* fallBack : { &unsmoothed, &cover })
+  {
+    std::vector<ptm::TriangulatedRegion> regions;
+    for (const Done& d : done)
+    {
+      regions.push_back({ &piece.complex.interfaces[d.region], &d.pointOfLocal, &d.triangulation });
+    }
+    std::vector<long long> mine;
+    for (std::size_t r : ptm::bentRegionsCrossingSurface(piece.complex, regions))
+    {
+      mine.insert(mine.end(), { std::get<0>(done[r].key), std::get<1>(done[r].key), std::get<2>(done[r].key) });
+    }
+    const std::vector<long long> all = ptm::allGatherValues(controller, mine);
+    std::set<RegionKey> flagged;
+    for (std::size_t k = 0; k + 2 < all.size(); k += 3)
+    {
+      flagged.insert(RegionKey(all[k], all[k + 1], all[k + 2]));
+    }
+    if (flagged.empty())
+    {
+      break;
+    }
+    redone += static_cast<long long>(flagged.size());
+    for (Done& d : done)
+    {
+      // a region the fall-back cannot triangulate keeps the triangles it had
+      // (on every rank alike: the triangulation is deterministic)
+      Done again;
+      std::string ignored;
+      if (flagged.count(d.key) && triangulateRegion(piece, d.region, *fallBack, again, ignored))
+      {
+        d = std::move(again);
+      }
+    }
+  }
+  return redone;
 }
 
 // Splits the long edges of the piece's interface loops (ContourSubdivision.h)
@@ -231,7 +307,8 @@ void replaceLoopsByTriangles(
 }
 
 // The figures of every region (the same on every rank) in field data.
-void addFigures(vtkFieldData* fd, const RegionFigures& total, long long contourPoints, bool anyRegion)
+void addFigures(
+  vtkFieldData* fd, const RegionFigures& total, long long contourPoints, long long redone, bool anyRegion)
 {
   auto addCount = [&](const char* name, long long value) {
     vtkNew<vtkIdTypeArray> a;
@@ -239,13 +316,14 @@ void addFigures(vtkFieldData* fd, const RegionFigures& total, long long contourP
     a->InsertNextValue(value);
     fd->AddArray(a);
   };
-  addCount("ContourPointsAdded", contourPoints);
-  addCount("InterfaceNewPoints", total.newPoints);
-  addCount("InterfaceTrianglesBelowMinimumAngle", total.belowMinimumAngle);
-  addCount("InterfaceTrianglesBelowMinimumAngleAwayFromBoundary", total.belowMinimumAngleAwayFromBoundary);
-  addCount("EncroachedBoundarySegments", total.encroached);
+  addCount(ptm::arrays::ContourPointsAdded, contourPoints);
+  addCount(ptm::arrays::InterfacesTriangulatedAgain, redone);
+  addCount(ptm::arrays::InterfaceNewPoints, total.newPoints);
+  addCount(ptm::arrays::InterfaceTrianglesBelowMinimumAngle, total.belowMinimumAngle);
+  addCount(ptm::arrays::InterfaceTrianglesBelowMinimumAngleAwayFromBoundary, total.belowMinimumAngleAwayFromBoundary);
+  addCount(ptm::arrays::EncroachedBoundarySegments, total.encroached);
   vtkNew<vtkDoubleArray> angle;
-  angle->SetName("InterfaceMinimumAngle");
+  angle->SetName(ptm::arrays::InterfaceMinimumAngle);
   angle->InsertNextValue(anyRegion ? total.minimumAngle : 0.0);
   fd->AddArray(angle);
 }
@@ -325,7 +403,7 @@ int vtkInterfaceTriangulator::RequestData(
   options.minimumAngleDegrees = this->MinimumAngle;
   options.maximumEdgeLength = this->MaximumEdgeLength;
   options.sizeAt = field.size;
-  const std::vector<Done> done = triangulateRegions(piece, options, localError,
+  std::vector<Done> done = triangulateRegions(piece, options, localError,
     [this](double fraction) { this->UpdateProgress(0.1 + 0.7 * fraction); });
   if (run.FailedAnywhere(localError))
   {
@@ -335,6 +413,8 @@ int vtkInterfaceTriangulator::RequestData(
   {
     return run.Aborted();
   }
+  run.Step(0.8, "Checking bent interfaces against the surface");
+  const long long redone = retriangulateCrossingRegions(controller, piece, options, done);
 
   // Global ids of the new points: every rank learns every region's count.
   RegionFigures total;
@@ -346,7 +426,7 @@ int vtkInterfaceTriangulator::RequestData(
   run.Step(0.9, "Writing the complex");
   ptm::complexToPolyData(piece, {}, output);
   vtkFieldData* fd = output->GetFieldData();
-  addFigures(fd, total, contourPoints, !firstNewId.empty());
+  addFigures(fd, total, contourPoints, redone, !firstNewId.empty());
   ptm::passOnFieldData(input, fd); // the cutter's facts and the size samples
   return run.Done();
 }
