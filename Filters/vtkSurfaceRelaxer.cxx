@@ -39,6 +39,8 @@ void addRelaxationFields(vtkFieldData* fd, const ptm::RelaxationResult& result, 
   addValue("ShareBelow20DegreesBefore", result.before.shareBelow20Degrees);
   addValue("ShareBelow20DegreesAfter", result.after.shareBelow20Degrees);
   addValue("MovedNodeCount", static_cast<double>(result.acceptedMoves));
+  // nodes put back because their moves made a subdomain cross itself
+  addValue("UndoneMoveCount", static_cast<double>(result.undoneMoves));
   // what the relaxation did to the geometry (~1e-15 in KeepSurface mode)
   addValue("RelaxationMode", static_cast<double>(mode));
   addValue("VolumeChange", result.change.volumeChange);

@@ -491,3 +491,38 @@ TEST(PlaneClearance, AwayFromPointsOrThroughThem)
   // enough is enough: of offsets clear by half an edge, the nearest to the preferred one
   EXPECT_NEAR(clearance.clearestOffset(0.3, 0.45, 0.31, 0.2), 0.31, 1e-12);
 }
+
+// A vertex within the snap distance of the plane whose neighbours all lie
+// across it (here the lower apex of a diamond, 0.01 under z = 0, its four
+// neighbours at z = 0.5): snapped, it would take its four triangles above
+// and poke through the plane by 0.01 (femur at K = 64 crossed itself so).
+// It keeps its side, and the plane cuts the small cap around it off.
+TEST(PlaneSplit, VertexWhoseNeighboursAllLieAcrossKeepsItsSide)
+{
+  SurfaceComplex c;
+  c.points = { { 0, 0, -0.01 }, { 1, 0, 0.5 }, { 0, 1, 0.5 }, { -1, 0, 0.5 }, { 0, -1, 0.5 }, { 0, 0, 1 } };
+  for (Index k = 0; k < 4; ++k)
+  {
+    const Index a = 1 + k, b = 1 + (k + 1) % 4;
+    c.triangles.push_back({ 0, b, a }); // outward: the lower apex's fan faces down
+    c.triangles.push_back({ 5, a, b });
+  }
+  c.trianglePairs.assign(c.triangles.size(), SubdomainPair{ 0, -1 });
+  c.sourceFaces.assign(c.triangles.size(), -1);
+  CuttingPlane plane;
+  plane.normal = { 0, 0, 1 };
+  c.planes.push_back(plane);
+  PlaneSplitStats stats;
+  std::string error;
+  ASSERT_TRUE(splitCell(c, 0, { 0, 0, 1 }, 0.0, 0, 1, 2, {}, stats, error)) << error;
+  EXPECT_EQ(stats.unsnappedPoints, 1u);
+  EXPECT_EQ(stats.snappedPoints, 0u);
+  std::size_t below = 0;
+  for (const SubdomainPair& pair : c.trianglePairs)
+  {
+    below += pair[0] == 1 ? 1 : 0;
+  }
+  EXPECT_EQ(below, 4u); // the cap: the lower apex's four triangles, cut near it
+  ASSERT_EQ(c.interfaces.size(), 1u);
+  EXPECT_EQ(c.interfaces[0].edges.size(), 4u);
+}

@@ -108,6 +108,10 @@ SelfIntersectionReport checkSelfIntersection(
     report.firstTriangle = static_cast<Index>(pairs.front().first);
     report.secondTriangle = static_cast<Index>(pairs.front().second);
   }
+  for (const auto& [f, g] : pairs)
+  {
+    report.crossings.emplace_back(static_cast<Index>(f), static_cast<Index>(g));
+  }
   return report;
 }
 } // namespace ptm

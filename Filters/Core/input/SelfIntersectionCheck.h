@@ -6,6 +6,7 @@
 #include "TriangleSurface.h"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ptm
@@ -17,6 +18,7 @@ struct SelfIntersectionReport
   std::size_t pairs = 0;       // intersecting triangle pairs (up to `limit`)
   Index firstTriangle = -1;    // one pair, for the message
   Index secondTriangle = -1;
+  std::vector<std::pair<Index, Index>> crossings; // every pair found (up to `limit`)
   std::string note;            // why it could not be checked
 };
 

@@ -1,5 +1,7 @@
 #include "SurfaceRelaxation.h"
 
+#include "SelfIntersectionCheck.h"
+
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
@@ -816,6 +818,110 @@ void Relaxer::run(RelaxationResult& result)
   }
   result.movesBeyondDeviation = movesBeyondDeviation;
 }
+
+// The surface of subdomain s (its triangles turned outward), and for each of
+// its triangles the complex triangle it is.
+TriangleSurface subdomainSurfaceOf(const SurfaceComplex& c, int s, std::vector<std::size_t>& which)
+{
+  TriangleSurface surface{ c.points, {} };
+  which.clear();
+  for (std::size_t t = 0; t < c.triangles.size(); ++t)
+  {
+    const Triangle& tri = c.triangles[t];
+    if (c.trianglePairs[t][0] == s || c.trianglePairs[t][1] == s)
+    {
+      surface.triangles.push_back(c.trianglePairs[t][0] == s ? tri : Triangle{ tri[0], tri[2], tri[1] });
+      which.push_back(t);
+    }
+  }
+  return surface;
+}
+
+// Moves that made a subdomain's surface cross itself are undone: every
+// moved node of a crossing triangle goes back where it was, until no
+// subdomain crosses itself (a few rounds; the complex before relaxation is
+// the one the triangulator checked). KeepSurface moves keep each fan's
+// polygon, but a fan counts as in its plane within planeTolerance, and a
+// move next to a contour point computed 1e-14 off an inclined plane made
+// occt-Bottom (K = 16, parallel planes) cross itself by that much under a
+// surface triangle there, which TetGen's check then refused. Checked with
+// CGAL's exact predicates among the triangles of moved nodes and those
+// whose boxes reach theirs. Returns the number of nodes put back.
+std::size_t undoCrossingMoves(SurfaceComplex& c, const std::vector<Vec3>& original)
+{
+  std::size_t undone = 0;
+  int subdomains = 0; // the labels in use (a piece's complex may not set subdomainCount)
+  for (const SubdomainPair& pair : c.trianglePairs)
+  {
+    subdomains = std::max({ subdomains, pair[0] + 1, pair[1] + 1 });
+  }
+  for (int round = 0; round < 4; ++round)
+  {
+    std::set<Index> back;
+    for (int s = 0; s < subdomains; ++s)
+    {
+      std::vector<std::size_t> which;
+      const TriangleSurface surface = subdomainSurfaceOf(c, s, which);
+      Box movedBox;
+      std::vector<char> moved(surface.triangles.size(), 0);
+      for (std::size_t i = 0; i < surface.triangles.size(); ++i)
+      {
+        for (Index v : surface.triangles[i])
+        {
+          moved[i] = moved[i] || c.points[v] != original[v];
+        }
+        for (Index v : surface.triangles[i])
+        {
+          if (moved[i])
+          {
+            movedBox.add(c.points[v]);
+          }
+        }
+      }
+      std::vector<Index> near;
+      for (std::size_t i = 0; i < surface.triangles.size(); ++i)
+      {
+        Box box;
+        for (Index v : surface.triangles[i])
+        {
+          box.add(c.points[v]);
+        }
+        if (moved[i] || box.overlaps(movedBox))
+        {
+          near.push_back(static_cast<Index>(i));
+        }
+      }
+      if (near.empty())
+      {
+        continue;
+      }
+      const SelfIntersectionReport report = checkSelfIntersection(surface, near, 64);
+      for (const auto& [f, g] : report.crossings)
+      {
+        for (Index i : { f, g })
+        {
+          for (Index v : surface.triangles[i])
+          {
+            if (c.points[v] != original[v])
+            {
+              back.insert(v);
+            }
+          }
+        }
+      }
+    }
+    if (back.empty())
+    {
+      break;
+    }
+    for (Index v : back)
+    {
+      c.points[v] = original[v];
+    }
+    undone += back.size();
+  }
+  return undone;
+}
 } // namespace
 
 TriangleQualityFigures triangleQuality(const SurfaceComplex& c)
@@ -882,6 +988,7 @@ RelaxationResult relaxSurfaceComplex(SurfaceComplex& c, const RelaxationOptions&
   result.before = triangleQuality(c);
   const SurfaceComplex before = c;
   Relaxer(c, options).run(result);
+  result.undoneMoves = undoCrossingMoves(c, before.points);
   result.after = triangleQuality(c);
   result.change = surfaceChange(before, c);
   result.ok = true;

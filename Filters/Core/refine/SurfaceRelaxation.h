@@ -103,6 +103,7 @@ struct RelaxationResult
   std::size_t acceptedMoves = 0;
   std::size_t rejectedMoves = 0;
   std::size_t movesBeyondDeviation = 0; // SmoothSurface: trial positions refused by maximumSurfaceDeviation
+  std::size_t undoneMoves = 0; // nodes put back because their moves made a subdomain cross itself
 };
 
 TriangleQualityFigures triangleQuality(const SurfaceComplex& complex);
