@@ -12,6 +12,13 @@ namespace ptm
 {
 using Index = std::int64_t;
 using Triangle = std::array<Index, 3>;
+// An edge with its smaller index first: the key of an edge whatever way
+// its triangles run along it.
+using UndirectedEdge = std::array<Index, 2>;
+inline UndirectedEdge undirected(Index a, Index b)
+{
+  return a < b ? UndirectedEdge{ a, b } : UndirectedEdge{ b, a };
+}
 
 struct TriangleSurface
 {

@@ -8,13 +8,6 @@ namespace ptm
 {
 namespace
 {
-using UndirectedEdge = std::array<Index, 2>;
-
-UndirectedEdge undirected(Index a, Index b)
-{
-  return a < b ? UndirectedEdge{ a, b } : UndirectedEdge{ b, a };
-}
-
 // The size wanted at p: the field where it is set, positive and below
 // `size`, never under size / 1000 (a field near 0 must not split an edge
 // into millions of parts); `size` elsewhere.

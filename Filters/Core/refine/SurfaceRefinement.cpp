@@ -18,13 +18,6 @@ namespace ptm
 namespace
 {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using UndirectedEdge = std::array<Index, 2>; // smaller index first
-
-UndirectedEdge undirected(Index a, Index b)
-{
-  return { std::min(a, b), std::max(a, b) };
-}
-
 /// @name The surface's adjacency
 /// @{
 // across[t][k]: the triangle on the other side of edge k (from corner k to
