@@ -126,24 +126,26 @@ std::vector<Done> triangulateRegions(const ptm::ComplexPiece& piece,
 
 // Regions bent through snapped vertices whose triangulation crosses the
 // surface of a subdomain they bound (BentRegionCheck.h) are triangulated
-// again, less refined each time: first unsmoothed (the triangulation the
-// cutter checked its cuts with, when the sizes agree), then with no points
-// inside but what the quality of 1 degree needs. Every rank learns every
-// flagged region, so both sides of a region take the same fall-back. A
-// region still crossing after both is left to the mesher, which names the
-// subdomain. Returns the number of regions triangulated again.
-long long retriangulateCrossingRegions(vtkMultiProcessController* controller,
-  const ptm::ComplexPiece& piece, const ptm::InterfaceTriangulationOptions& options,
-  std::vector<Done>& done)
+// again: first as the cutter triangulated them to check its cuts
+// (automatic sizing graded from the boundary, unsmoothed, no size field),
+// then with no points inside but what the quality of 1 degree needs. On
+// occt-Bottom with 16 and 32 parallel planes, a region triangulated at the
+// size asked for (270) crossed a surface triangle under a vertex snapped
+// 0.12 off the plane, and so did the minimal triangulation; the graded one
+// did not. Every rank learns every flagged region, so both sides of a
+// region take the same fall-back. A region still crossing after both is
+// left to the mesher, which names the subdomain. Returns the number of
+// regions triangulated again.
+long long retriangulateCrossingRegions(
+  vtkMultiProcessController* controller, const ptm::ComplexPiece& piece, std::vector<Done>& done)
 {
-  ptm::InterfaceTriangulationOptions unsmoothed = options;
-  unsmoothed.smooth = false;
-  ptm::InterfaceTriangulationOptions cover = unsmoothed;
+  ptm::InterfaceTriangulationOptions checked; // the cutter's (VolumeBalancedDecomposition.cpp: partCrossesItself)
+  checked.smooth = false;
+  ptm::InterfaceTriangulationOptions cover = checked;
   cover.minimumAngleDegrees = 1.0;
   cover.maximumEdgeLength = std::numeric_limits<double>::max();
-  cover.sizeAt = {};
   long long redone = 0;
-  for (const ptm::InterfaceTriangulationOptions* fallBack : { &unsmoothed, &cover })
+  for (const ptm::InterfaceTriangulationOptions* fallBack : { &checked, &cover })
   {
     std::vector<ptm::TriangulatedRegion> regions;
     for (const Done& d : done)
@@ -414,7 +416,7 @@ int vtkInterfaceTriangulator::RequestData(
     return run.Aborted();
   }
   run.Step(0.8, "Checking bent interfaces against the surface");
-  const long long redone = retriangulateCrossingRegions(controller, piece, options, done);
+  const long long redone = retriangulateCrossingRegions(controller, piece, done);
 
   // Global ids of the new points: every rank learns every region's count.
   RegionFigures total;
