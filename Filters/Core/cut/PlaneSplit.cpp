@@ -298,26 +298,37 @@ void CellSplit::classifyVertices()
 // interface, and the part crosses itself. Seen on femur at K = 64: a vertex
 // 1.5e-4 below a plane through its neighbour, with every other neighbour
 // above, went above with its four triangles, and TetGen refused the
-// subdomain. Such a vertex keeps its side; the plane then cuts the cap
-// around it, its edges at a fifth to a half of their length (the distance
-// is within the snap distance of its shortest edge, but its neighbours
-// across are farther). Only from a thousandth of the shortest edge on (the
-// least snap fraction the balancing uses): nearer, the vertex lies on the
-// plane up to round-off (on the unit tests' surfaces, at 4e-16 to 2e-14 of
-// its edge where cuts run through earlier lines), and unsnapped it would
-// leave slivers of that width.
+// subdomain. Such a vertex keeps its side, and the plane cuts the cap
+// around it off, where the cap is not too small: the plane must cross
+// every edge to a neighbour across at least 1 % of its length from the
+// vertex (3 % on femur). Nearer, the cap's slivers crash TetGen: OpenSCAD's
+// example005 at K = 64 with parallel planes had caps cut at 0.02 % to 0.1 %
+// of their edges, and TetGen 1.5 crashed on two subdomains. Such a vertex
+// stays snapped (the poke is then under 1 % of its edges' height, and the
+// mesher names the subdomain if it crosses). A vertex within a thousandth
+// of its shortest edge lies on the plane up to round-off (4e-16 to 2e-14 of
+// its edge where cuts run through earlier lines) and always stays snapped.
 void CellSplit::unsnapPokingVertices()
 {
   constexpr double kLeastOffPlane = 1e-3;
-  std::unordered_map<Index, std::pair<bool, bool>> neighbours; // snapped v -> (one on its side, one across)
+  constexpr double kLeastCapFraction = 0.01;
+  struct Seen
+  {
+    bool ownSide = false;      // a neighbour on the vertex's own side
+    double farthestAcross = -1; // distance of the farthest neighbour across (-1: none)
+  };
+  std::unordered_map<Index, Seen> neighbours; // snapped vertices
   auto look = [&](Index v, Index w) {
     const VertexSide& info = vertices.at(v);
     if (info.snapped)
     {
       const int own = info.distance < 0 ? -1 : 1;
-      auto& [ownSide, across] = neighbours[v];
-      ownSide = ownSide || sideOf(w) == own;
-      across = across || sideOf(w) == -own;
+      Seen& seen = neighbours[v];
+      seen.ownSide = seen.ownSide || sideOf(w) == own;
+      if (sideOf(w) == -own)
+      {
+        seen.farthestAcross = std::max(seen.farthestAcross, std::fabs(vertices.at(w).distance));
+      }
     }
   };
   for (std::size_t i : triangles)
@@ -339,18 +350,17 @@ void CellSplit::unsnapPokingVertices()
   }
   for (const auto& [v, seen] : neighbours)
   {
-    if (seen.second && !seen.first)
+    VertexSide& info = vertices.at(v);
+    const double d = std::fabs(info.distance);
+    if (seen.ownSide || seen.farthestAcross < 0 || d < kLeastOffPlane * info.shortestEdge ||
+      d < kLeastCapFraction * (d + seen.farthestAcross))
     {
-      VertexSide& info = vertices.at(v);
-      if (std::fabs(info.distance) < kLeastOffPlane * info.shortestEdge)
-      {
-        continue;
-      }
-      info.snapped = false;
-      info.side = info.distance < 0 ? -1 : 1;
-      --stats.snappedPoints;
-      ++stats.unsnappedPoints;
+      continue;
     }
+    info.snapped = false;
+    info.side = info.distance < 0 ? -1 : 1;
+    --stats.snappedPoints;
+    ++stats.unsnappedPoints;
   }
 }
 
