@@ -1,6 +1,7 @@
 #include "SurfaceRelaxation.h"
 
 #include "SelfIntersectionCheck.h"
+#include "SubdomainSurface.h"
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -819,34 +820,17 @@ void Relaxer::run(RelaxationResult& result)
   result.movesBeyondDeviation = movesBeyondDeviation;
 }
 
-// The surface of subdomain s (its triangles turned outward), and for each of
-// its triangles the complex triangle it is.
-TriangleSurface subdomainSurfaceOf(const SurfaceComplex& c, int s, std::vector<std::size_t>& which)
-{
-  TriangleSurface surface{ c.points, {} };
-  which.clear();
-  for (std::size_t t = 0; t < c.triangles.size(); ++t)
-  {
-    const Triangle& tri = c.triangles[t];
-    if (c.trianglePairs[t][0] == s || c.trianglePairs[t][1] == s)
-    {
-      surface.triangles.push_back(c.trianglePairs[t][0] == s ? tri : Triangle{ tri[0], tri[2], tri[1] });
-      which.push_back(t);
-    }
-  }
-  return surface;
-}
-
 // Moves that made a subdomain's surface cross itself are undone: every
 // moved node of a crossing triangle goes back where it was, until no
 // subdomain crosses itself (a few rounds; the complex before relaxation is
 // the one the triangulator checked). KeepSurface moves keep each fan's
-// polygon, but a fan counts as in its plane within planeTolerance, and a
-// move next to a contour point computed 1e-14 off an inclined plane made
-// occt-Bottom (K = 16, parallel planes) cross itself by that much under a
-// surface triangle there, which TetGen's check then refused. Checked with
-// CGAL's exact predicates among the triangles of moved nodes and those
-// whose boxes reach theirs. Returns the number of nodes put back.
+// polygon, but a fan counts as in its plane within planeTolerance, so a
+// move next to a point computed a hair off an inclined plane can cross a
+// surface triangle that meets the plane at a shallow angle: on occt-Bottom
+// cut by 16 parallel planes (the core alone, with the interfaces at the
+// sweep's size) one node was put back. Checked with CGAL's exact predicates
+// among the triangles of moved nodes and those whose boxes reach theirs.
+// Returns the number of nodes put back.
 std::size_t undoCrossingMoves(SurfaceComplex& c, const std::vector<Vec3>& original)
 {
   std::size_t undone = 0;
@@ -855,26 +839,37 @@ std::size_t undoCrossingMoves(SurfaceComplex& c, const std::vector<Vec3>& origin
   {
     subdomains = std::max({ subdomains, pair[0] + 1, pair[1] + 1 });
   }
+  std::vector<Index> identity(c.points.size()); // complex points are their own ids here
+  for (std::size_t v = 0; v < identity.size(); ++v)
+  {
+    identity[v] = static_cast<Index>(v);
+  }
   for (int round = 0; round < 4; ++round)
   {
     std::set<Index> back;
     for (int s = 0; s < subdomains; ++s)
     {
-      std::vector<std::size_t> which;
-      const TriangleSurface surface = subdomainSurfaceOf(c, s, which);
+      SubdomainSurface extracted;
+      std::string unused;
+      if (!extractSubdomainSurface(c, identity, s, extracted, unused))
+      {
+        continue; // no triangles, or not closed: nothing the check could say
+      }
+      const TriangleSurface& surface = extracted.surface;
+      auto complexPoint = [&](Index local) { return extracted.globalIds[local]; };
       Box movedBox;
       std::vector<char> moved(surface.triangles.size(), 0);
       for (std::size_t i = 0; i < surface.triangles.size(); ++i)
       {
         for (Index v : surface.triangles[i])
         {
-          moved[i] = moved[i] || c.points[v] != original[v];
+          moved[i] = moved[i] || c.points[complexPoint(v)] != original[complexPoint(v)];
         }
         for (Index v : surface.triangles[i])
         {
           if (moved[i])
           {
-            movedBox.add(c.points[v]);
+            movedBox.add(surface.points[v]);
           }
         }
       }
@@ -884,7 +879,7 @@ std::size_t undoCrossingMoves(SurfaceComplex& c, const std::vector<Vec3>& origin
         Box box;
         for (Index v : surface.triangles[i])
         {
-          box.add(c.points[v]);
+          box.add(surface.points[v]);
         }
         if (moved[i] || box.overlaps(movedBox))
         {
@@ -902,9 +897,9 @@ std::size_t undoCrossingMoves(SurfaceComplex& c, const std::vector<Vec3>& origin
         {
           for (Index v : surface.triangles[i])
           {
-            if (c.points[v] != original[v])
+            if (c.points[complexPoint(v)] != original[complexPoint(v)])
             {
-              back.insert(v);
+              back.insert(complexPoint(v));
             }
           }
         }
