@@ -126,7 +126,7 @@ std::vector<Done> triangulateRegions(const ptm::ComplexPiece& piece,
 
 // Regions bent through snapped vertices whose triangulation crosses the
 // surface of a subdomain they bound (BentRegionCheck.h) are triangulated
-// again: first as the cutter triangulated them to check its cuts
+// again: first with the options the cutter checks its cuts with
 // (automatic sizing graded from the boundary, unsmoothed, no size field),
 // then with no points inside but what the quality of 1 degree needs. On
 // occt-Bottom with 16 and 32 parallel planes, a region triangulated at the
@@ -139,7 +139,7 @@ std::vector<Done> triangulateRegions(const ptm::ComplexPiece& piece,
 long long retriangulateCrossingRegions(
   vtkMultiProcessController* controller, const ptm::ComplexPiece& piece, std::vector<Done>& done)
 {
-  ptm::InterfaceTriangulationOptions checked; // the cutter's (VolumeBalancedDecomposition.cpp: partCrossesItself)
+  ptm::InterfaceTriangulationOptions checked; // as the cutter's check (VolumeBalancedDecomposition.cpp: partCrossesItself)
   checked.smooth = false;
   ptm::InterfaceTriangulationOptions cover = checked;
   cover.minimumAngleDegrees = 1.0;
@@ -153,7 +153,17 @@ long long retriangulateCrossingRegions(
       regions.push_back({ &piece.complex.interfaces[d.region], &d.pointOfLocal, &d.triangulation });
     }
     std::vector<long long> mine;
-    for (std::size_t r : ptm::bentRegionsCrossingSurface(piece.complex, regions))
+    std::vector<std::size_t> crossing;
+    try
+    {
+      crossing = ptm::bentRegionsCrossingSurface(piece.complex, regions);
+    }
+    catch (const std::exception&)
+    {
+      // no verdict from this rank; the all-gather below must still be reached
+      // by every rank, and the mesher checks every subdomain again
+    }
+    for (std::size_t r : crossing)
     {
       mine.insert(mine.end(), { std::get<0>(done[r].key), std::get<1>(done[r].key), std::get<2>(done[r].key) });
     }
