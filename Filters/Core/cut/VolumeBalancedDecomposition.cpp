@@ -313,6 +313,10 @@ struct PartCut
 
   Trial tryCut(const Vec3& n, double at, double snap);
   Trial clearestBalancedCut(const Vec3& n, Trial&& balanced, double& at);
+  double clearanceBudget() const
+  {
+    return 0.8 * allowed / (1.0 + std::log(static_cast<double>(parts)));
+  }
   double predictedClearance(const Vec3& n) const;
   Vec3 clearerNormal(const Vec3& normal, const NearlyContinuedLine& continued) const;
   Trial balancedCut(const Vec3& n, double& at, bool& tooThin);
@@ -432,11 +436,11 @@ Trial PartCut::tryCut(const Vec3& n, double at, double snap)
 // 0.0081 against the tolerance of 0.01.
 Trial PartCut::clearestBalancedCut(const Vec3& n, Trial&& balanced, double& at)
 {
-  const double budget = 0.8 * allowed / (1.0 + std::log(static_cast<double>(parts)));
+  const double budget = clearanceBudget();
   const double low = at + std::min(0.0, (-budget - balanced.missing) / balanced.area);
   const double high = at + std::max(0.0, (budget - balanced.missing) / balanced.area);
   const PlaneClearance clearance(c, cell, n);
-  const double clearest = clearance.clearestOffset(low, high, at, 0.5);
+  const double clearest = clearance.clearestOffset(low, high, at, kEnoughClearance);
   if (clearest == at || !(clearance.at(clearest) > clearance.at(at)))
   {
     return std::move(balanced);
@@ -467,7 +471,7 @@ double PartCut::predictedClearance(const Vec3& n) const
   }
   const double step = 1e-4 * span;
   const double area = (measure.below(at + step) - measure.below(at - step)) / (2.0 * step);
-  const double budget = 0.8 * allowed / (1.0 + std::log(static_cast<double>(parts)));
+  const double budget = clearanceBudget();
   const double half = area > 0 ? std::min(budget / area, 0.5 * span) : 0.0;
   const PlaneClearance clearance(c, cell, n);
   return std::min(kEnoughClearance,
