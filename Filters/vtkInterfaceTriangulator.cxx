@@ -197,8 +197,9 @@ long long retriangulateCrossingRegions(
 // and numbers the new points from piece.globalPointCount (advanced past
 // them) in the order of their edges' global ids, which every rank learns:
 // a rank sees only the edges of its own regions, and ids must not depend on
-// which rank holds what. An edge that any rank finds risky (EdgeSplit) is
-// split by none. Returns how many points all ranks added.
+// which rank holds what. An edge takes the most parts any rank wants (each
+// sees the surface triangles on its own side); one that any rank finds
+// risky (EdgeSplit) is split by none. Returns how many points all ranks added.
 long long subdivideContours(vtkMultiProcessController* controller, ptm::ComplexPiece& piece,
   const ptm::ContourSubdivisionOptions& options)
 {
@@ -207,32 +208,35 @@ long long subdivideContours(vtkMultiProcessController* controller, ptm::ComplexP
   for (const ptm::EdgeSplit& s : splits)
   {
     mine.insert(mine.end(), { piece.globalIds[s.ends[0]], piece.globalIds[s.ends[1]],
-                              static_cast<long long>(s.points.size()), s.risky ? 1LL : 0LL });
+                              static_cast<long long>(s.parts), s.risky ? 1LL : 0LL });
   }
   const std::vector<long long> all = ptm::allGatherValues(controller, mine);
-  // edge -> its points' count (0 where any rank found it risky), then first id
-  std::map<std::pair<long long, long long>, long long> firstId;
+  // edge -> (the most parts wanted, risky anywhere), then (its first id, its parts)
+  std::map<std::pair<long long, long long>, std::pair<long long, long long>> agreed;
   for (std::size_t k = 0; k + 3 < all.size(); k += 4)
   {
-    auto [it, inserted] = firstId.emplace(std::make_pair(all[k], all[k + 1]), all[k + 2]);
-    it->second = all[k + 3] ? 0 : it->second;
+    auto [it, inserted] = agreed.emplace(std::make_pair(all[k], all[k + 1]), std::make_pair(all[k + 2], 0LL));
+    it->second.first = std::max(it->second.first, all[k + 2]);
+    it->second.second = it->second.second || all[k + 3];
   }
   long long next = piece.globalPointCount;
-  for (auto& [edge, countThenId] : firstId)
+  for (auto& [edge, value] : agreed)
   {
-    const long long count = countThenId;
-    countThenId = count > 0 ? next : -1;
-    next += count;
+    const long long parts = value.second ? 1 : value.first;
+    value = { next, parts };
+    next += parts - 1;
   }
   for (ptm::EdgeSplit& s : splits)
   {
-    s.risky = firstId.at({ piece.globalIds[s.ends[0]], piece.globalIds[s.ends[1]] }) < 0;
+    ptm::splitIntoParts(
+      piece.complex, s, static_cast<int>(agreed.at({ piece.globalIds[s.ends[0]], piece.globalIds[s.ends[1]] }).second));
+    s.risky = false; // an edge some rank found risky is in 1 part everywhere
   }
   ptm::applyEdgeSplits(piece.complex, splits);
   for (const ptm::EdgeSplit& s : splits)
   {
-    long long id = firstId.at({ piece.globalIds[s.ends[0]], piece.globalIds[s.ends[1]] });
-    for (std::size_t i = 0; i < s.points.size() && !s.risky; ++i)
+    long long id = agreed.at({ piece.globalIds[s.ends[0]], piece.globalIds[s.ends[1]] }).first;
+    for (std::size_t i = 0; i < s.points.size(); ++i)
     {
       piece.globalIds.push_back(id++);
     }
@@ -403,6 +407,7 @@ int vtkInterfaceTriangulator::RequestData(
     ptm::ContourSubdivisionOptions subdivision;
     subdivision.size = this->MaximumEdgeLength > 0 ? this->MaximumEdgeLength : piece.inputMeanEdgeLength;
     subdivision.sizeAt = field.size;
+    subdivision.minimumAngleDegrees = this->MinimumAngle;
     if (subdivision.size > 0)
     {
       contourPoints = subdivideContours(controller, piece, subdivision);

@@ -43,6 +43,8 @@ public:
   ///@{
   /// Smallest angle allowed in an interface triangle, in degrees (default
   /// 20.7, the bound with guaranteed termination; up to about 30 works).
+  /// Contour subdivision splits a contour finer next to a surface triangle
+  /// with an angle under it (ContourSubdivision.h).
   vtkSetMacro(MinimumAngle, double);
   vtkGetMacro(MinimumAngle, double);
   ///@}

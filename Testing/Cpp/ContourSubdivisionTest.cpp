@@ -50,13 +50,6 @@ SurfaceComplex pieceOf(const SurfaceComplex& c, int s)
   }
   return piece;
 }
-
-double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b)
-{
-  const Vec3 d = b - a;
-  const double t = std::clamp(dot(p - a, d) / dot(d, d), 0.0, 1.0);
-  return norm(p - (a + t * d));
-}
 } // namespace
 
 class ContourSubdivision : public ::testing::TestWithParam<std::tuple<int, CutStrategy>>
@@ -80,22 +73,33 @@ TEST_P(ContourSubdivision, ShortEdgesSameVolumesClosedSubdomainsSamePointsOnEver
   }
   ContourSubdivisionOptions options;
   options.size = size;
+  options.minimumAngleDegrees = 20.7;
   const std::vector<EdgeSplit> splits = interfaceEdgeSplits(c, ids, options);
   ASSERT_FALSE(splits.empty()) << label.str();
 
-  // a piece computes the same points for the edges it has
+  // the pieces, each seeing one side of an edge, want at most the parts the
+  // whole complex wants, the most of them exactly as many (what the
+  // triangulator agrees on), and the same count gives the same points
+  std::map<std::array<Index, 2>, const EdgeSplit*> whole;
+  for (const EdgeSplit& e : splits)
+  {
+    whole[e.ends] = &e;
+  }
+  std::map<std::array<Index, 2>, int> most;
   for (int s = 0; s < K; ++s)
   {
-    std::map<std::array<Index, 2>, std::vector<Vec3>> whole;
-    for (const EdgeSplit& e : splits)
-    {
-      whole[e.ends] = e.points;
-    }
-    for (const EdgeSplit& e : interfaceEdgeSplits(pieceOf(c, s), ids, options))
+    for (EdgeSplit e : interfaceEdgeSplits(pieceOf(c, s), ids, options))
     {
       ASSERT_TRUE(whole.count(e.ends)) << label.str();
-      EXPECT_EQ(whole[e.ends], e.points) << label.str() << ": subdomain " << s;
+      EXPECT_LE(e.parts, whole[e.ends]->parts) << label.str() << ": subdomain " << s;
+      most[e.ends] = std::max(most[e.ends], e.parts);
+      splitIntoParts(c, e, whole[e.ends]->parts);
+      EXPECT_EQ(e.points, whole[e.ends]->points) << label.str() << ": subdomain " << s;
     }
+  }
+  for (const auto& [ends, split] : whole)
+  {
+    EXPECT_EQ(most[ends], split->parts) << label.str();
   }
 
   const std::vector<double> before = subdomainVolumes(c);
@@ -157,13 +161,50 @@ TEST(ContourSubdivisionRule, ShortEdgesStayAndTheFieldRefines)
   c.interfaces.push_back({ 0, { 0, 1 }, { { 0, 1 }, { 1, 2 }, { 2, 0 } } });
   const std::vector<Index> ids{ 0, 1, 2 };
   std::vector<EdgeSplit> splits = interfaceEdgeSplits(c, ids, options);
-  ASSERT_EQ(splits.size(), 2u); // 1.4 stays; 3.0 in 3 parts; the hypotenuse 3.31 in 3
-  EXPECT_EQ(splits[0].points.size(), 2u);
+  ASSERT_EQ(splits.size(), 3u); // sorted by ends: {0, 1}, {0, 2}, {1, 2}
+  EXPECT_EQ(splits[0].parts, 1); // 1.4 stays
+  EXPECT_TRUE(splits[0].points.empty());
+  EXPECT_EQ(splits[1].parts, 3); // the hypotenuse 3.31
+  EXPECT_EQ(splits[2].parts, 3); // 3.0
+  EXPECT_EQ(splits[2].points.size(), 2u);
   // a finer field where it is below the size
   options.sizeAt = [](const Vec3&) { return 0.5; };
   splits = interfaceEdgeSplits(c, ids, options);
-  ASSERT_EQ(splits.size(), 3u);
-  EXPECT_EQ(splits[0].points.size(), 2u); // 1.4 / 0.5 = 2.8: 3 parts
+  EXPECT_EQ(splits[0].parts, 3); // 1.4 / 0.5 = 2.8
+}
+
+// A surface triangle on a contour edge that is a thin piece of a cut
+// triangle (a corner 0.15 from an edge 0.9 long) makes the edge split at that
+// distance (or a wedge at its width), so the boundary refinement can split
+// the input edge across it alike; never under a quarter of the size
+// (kThinPieceSpacingFraction); a good triangle on the edge changes nothing.
+TEST(ContourSubdivisionRule, ThinPieceOnAnEdgeSplitsItAtItsWidth)
+{
+  ContourSubdivisionOptions options;
+  options.size = 0.5;
+  options.minimumAngleDegrees = 20.7;
+  SurfaceComplex c;
+  c.points = { { 0, 0, 0 }, { 0.9, 0, 0 }, { 0.45, 0.8, 0 }, { 0.5, 0, 0.15 }, { 0.5, 0, 0.01 } };
+  c.planes.push_back({ { 0, 0, 0 }, { 0, 0, 1 }, 2 });
+  c.interfaces.push_back({ 0, { 0, 1 }, { { 0, 1 }, { 1, 2 }, { 2, 0 } } });
+  c.triangles = { { 1, 0, 3 } };
+  c.trianglePairs = { { 0, -1 } };
+  c.sourceFaces = { 0 };
+  const std::vector<Index> ids{ 0, 1, 2, 3, 4 };
+  auto partsOfBase = [&]() { return interfaceEdgeSplits(c, ids, options)[0].parts; };
+  EXPECT_EQ(partsOfBase(), 6); // 0.9 / 0.15
+  c.triangles = { { 1, 0, 4 } }; // 0.01 away: the floor 0.5 / 4, 7.2 parts
+  EXPECT_EQ(partsOfBase(), 7);
+  // a wedge whose sharp corner is the edge's end: the corner across lies far
+  // beyond the edge, but the triangle is 0.05 wide at the edge's other end
+  c.points.push_back({ 1.8, 0, 0.1 });
+  c.triangles = { { 1, 0, 5 } };
+  EXPECT_EQ(partsOfBase(), 7);
+  options.minimumAngleDegrees = 0; // the rule off: 0.9 / 0.5
+  EXPECT_EQ(partsOfBase(), 2);
+  options.minimumAngleDegrees = 20.7;
+  c.triangles = { { 1, 0, 2 } }; // a good triangle
+  EXPECT_EQ(partsOfBase(), 2);
 }
 
 INSTANTIATE_TEST_SUITE_P(KAndStrategy, ContourSubdivision,

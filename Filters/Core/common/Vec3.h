@@ -51,6 +51,14 @@ inline double triangleMinimumAngle(const Vec3& a, const Vec3& b, const Vec3& c)
   return std::min({ angle(a, b, c), angle(b, c, a), angle(c, a, b) });
 }
 
+// The distance from p to the segment ab (a != b).
+inline double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b)
+{
+  const Vec3 d = b - a;
+  const double t = std::clamp(dot(p - a, d) / dot(d, d), 0.0, 1.0);
+  return norm(p - (a + t * d));
+}
+
 // The point nearest the origin of the line where the planes n1 . x = d1 and
 // n2 . x = d2 meet (the line runs along cross(n1, n2), which must not be 0).
 inline Vec3 pointOnBothPlanes(const Vec3& n1, double d1, const Vec3& n2, double d2)

@@ -21,17 +21,63 @@ double localSize(const ContourSubdivisionOptions& options, const Vec3& p)
   return field > 0 && field < options.size ? std::max(field, 1e-3 * options.size) : options.size;
 }
 
-// The points of one edge's split, from `from` to `to` (none if it is short).
-std::vector<Vec3> splitPoints(const Vec3& from, const Vec3& to, const ContourSubdivisionOptions& options)
+// The points that split from-to into `parts` equal parts.
+std::vector<Vec3> pointsInParts(const Vec3& from, const Vec3& to, int parts)
 {
   const Vec3 d = to - from;
-  const double parts = std::round(norm(d) / localSize(options, from + 0.5 * d));
   std::vector<Vec3> points;
-  for (int i = 1; parts >= 2 && i < static_cast<int>(parts); ++i)
+  for (int i = 1; i < parts; ++i)
   {
     points.push_back(from + (static_cast<double>(i) / parts) * d);
   }
   return points;
+}
+
+// The parts edge {a, b} is split into (ContourSubdivision.h): at the local
+// size, or finer across a thin surface triangle on it (`across`: the third
+// corners of the surface triangles this rank holds on the edge).
+int wantedParts(const SurfaceComplex& c, Index a, Index b, const std::vector<Index>& across,
+  const ContourSubdivisionOptions& options)
+{
+  const Vec3 &pa = c.points[a], &pb = c.points[b];
+  const double local = localSize(options, pa + 0.5 * (pb - pa));
+  double spacing = local;
+  const double bound = options.minimumAngleDegrees * kPi / 180.0;
+  for (Index x : across)
+  {
+    const Vec3& px = c.points[x];
+    if (triangleMinimumAngle(pa, pb, px) < bound)
+    {
+      // the refinement splits the triangle's other edges at the distance of
+      // the corner across (SegmentSpacing), so the contour takes the
+      // smallest of the three: a wedge with its sharp corner at a contour
+      // end has its third corner far from the contour, not its width
+      const double width =
+        std::min({ distanceToSegment(px, pa, pb), distanceToSegment(pa, pb, px), distanceToSegment(pb, px, pa) });
+      spacing = std::min(spacing, std::max(kThinPieceSpacingFraction * local, width));
+    }
+  }
+  const double parts = std::round(norm(pb - pa) / spacing);
+  return parts >= 2 ? static_cast<int>(std::min(parts, 1e6)) : 1;
+}
+
+// The third corner of every surface triangle on each of `edges`.
+std::map<UndirectedEdge, std::vector<Index>> cornersAcross(
+  const SurfaceComplex& c, const std::map<UndirectedEdge, bool>& edges)
+{
+  std::map<UndirectedEdge, std::vector<Index>> across;
+  for (const Triangle& t : c.triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const UndirectedEdge e = undirected(t[k], t[(k + 1) % 3]);
+      if (edges.count(e))
+      {
+        across[e].push_back(t[(k + 2) % 3]);
+      }
+    }
+  }
+  return across;
 }
 
 // sin of the angle under which a face on a split edge makes the split risky
@@ -196,23 +242,26 @@ void fanTriangle(SurfaceComplex& c, std::size_t t, int k, const std::vector<Inde
 std::vector<EdgeSplit> interfaceEdgeSplits(
   const SurfaceComplex& complex, const std::vector<Index>& globalIds, const ContourSubdivisionOptions& options)
 {
-  std::map<UndirectedEdge, EdgeSplit> byPoints; // keyed by the ends' complex indices
+  std::map<UndirectedEdge, bool> regionEdges; // -> whether its first end has the smaller global id
   for (const InterfaceRegion& region : complex.interfaces)
   {
     for (const DirectedEdge& e : region.edges)
     {
-      const bool firstSmaller = globalIds[e[0]] < globalIds[e[1]];
-      const Index a = firstSmaller ? e[0] : e[1], b = firstSmaller ? e[1] : e[0];
-      if (byPoints.count(undirected(a, b)))
-      {
-        continue;
-      }
-      std::vector<Vec3> points = splitPoints(complex.points[a], complex.points[b], options);
-      if (!points.empty())
-      {
-        byPoints[undirected(a, b)] = EdgeSplit{ { a, b }, std::move(points) };
-      }
+      const UndirectedEdge key = undirected(e[0], e[1]);
+      regionEdges[key] = globalIds[key[0]] < globalIds[key[1]];
     }
+  }
+  const std::map<UndirectedEdge, std::vector<Index>> across = cornersAcross(complex, regionEdges);
+  std::map<UndirectedEdge, EdgeSplit> byPoints; // keyed by the ends' complex indices
+  for (const auto& [edge, firstSmaller] : regionEdges)
+  {
+    const Index a = firstSmaller ? edge[0] : edge[1], b = firstSmaller ? edge[1] : edge[0];
+    auto corners = across.find(edge);
+    const int parts =
+      wantedParts(complex, a, b, corners == across.end() ? std::vector<Index>() : corners->second, options);
+    EdgeSplit& split = byPoints[edge];
+    split.ends = { a, b };
+    splitIntoParts(complex, split, parts);
   }
   markRisky(complex, byPoints);
   std::map<UndirectedEdge, EdgeSplit> byIds; // sorted by the ends' global ids
@@ -229,12 +278,18 @@ std::vector<EdgeSplit> interfaceEdgeSplits(
   return splits;
 }
 
+void splitIntoParts(const SurfaceComplex& complex, EdgeSplit& split, int parts)
+{
+  split.parts = parts;
+  split.points = pointsInParts(complex.points[split.ends[0]], complex.points[split.ends[1]], parts);
+}
+
 void applyEdgeSplits(SurfaceComplex& c, const std::vector<EdgeSplit>& splits)
 {
   std::map<UndirectedEdge, std::pair<const EdgeSplit*, Index>> splitOf; // the split and its first point
   for (const EdgeSplit& s : splits)
   {
-    if (s.risky)
+    if (s.risky || s.parts < 2)
     {
       continue;
     }

@@ -152,13 +152,15 @@ using SegmentPoints = std::map<UndirectedEdge, std::vector<Index>>;
 // can be well shaped, as TetGen -q splits encroached segments. Corners of
 // good facets do not count: splitting the slightly long edge of a good
 // triangle only makes worse ones (a gmsh fillet from the corpus, K = 1: 0.33 %
-// of the tetrahedra under 10 degrees instead of 0.14 %). Never below size / 8:
-// the slivers a cut leaves next to a contour are poor facets too, and a floor
-// of size / 32 split the long input edges beside them into 121,000 points on
-// CGAL's joint at K = 16 (804,000 tetrahedra, 1.29 % under 10 degrees, where
-// K = 2 makes 86,000); size / 8 gives 295,000 and 1.44 %. The price is on
-// very thin input strips: OpenSCAD's CSG example, K = 1, 7.3 % under 10
-// degrees instead of 6.1 % with size / 32.
+// of the tetrahedra under 10 degrees instead of 0.14 %). Never below
+// kThinPieceSpacingFraction of the size (SizeFunction.h), the floor the
+// contours beside thin pieces are split at too: the slivers a cut leaves
+// next to a contour are poor facets, and a floor of size / 32 split the long
+// input edges beside them into 121,000 points on CGAL's joint at K = 16
+// (804,000 tetrahedra, 1.29 % under 10 degrees, where K = 2 makes 86,000);
+// size / 8 gave 295,000 and 1.44 % (before the contours were split alike).
+// The price is on very thin input strips: OpenSCAD's CSG example, K = 1,
+// 7.3 % under 10 degrees with size / 8 instead of 6.1 % with size / 32.
 class SegmentSpacing
 {
 public:
@@ -203,7 +205,6 @@ public:
   double Spacing(Index a, Index b, int facetA, int facetB) const
   {
     const Vec3 pa = this->Points[a], d = this->Points[b] - pa;
-    const double length2 = dot(d, d);
     const double local = this->LocalSize(pa + 0.5 * d);
     double spacing = local;
     std::array<long long, 3> lo = this->CellOf(pa), hi = lo;
@@ -232,11 +233,10 @@ public:
             {
               continue;
             }
-            const double t = std::clamp(dot(this->Points[v] - pa, d) / length2, 0.0, 1.0);
-            spacing = std::min(spacing, norm(this->Points[v] - (pa + t * d)));
+            spacing = std::min(spacing, distanceToSegment(this->Points[v], pa, this->Points[b]));
           }
         }
-    return std::max(spacing, local / 8.0);
+    return std::max(spacing, kThinPieceSpacingFraction * local);
   }
 
 private:
