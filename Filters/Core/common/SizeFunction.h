@@ -10,18 +10,18 @@ namespace ptm
 // A size field: the edge length wanted at a point in space. Empty: none.
 using SizeFunction = std::function<double(const Vec3&)>;
 
-// The shortest spacing a thin piece of the surface may ask for, as a
-// fraction of the local size: the boundary refinement's segments beside a
-// poor facet (SurfaceRefinement.cpp) and the contours beside a thin piece of
-// a cut triangle (ContourSubdivision.h). Both must use the same value, or
-// the two sides of a piece get points at different spacings and its mesh is
-// a fan of caps. A quarter against the eighth used before for the segments
-// alone (corpus, K = 16, 2 ranks, 9 surfaces x both strategies): the share
-// of tetrahedra under 10 degrees fell on 14 of 18 runs (elephant with
-// parallel planes 1.88 -> 1.31 %, fandisk 0.96 -> 0.61 %) and rose on 4
-// (CGAL's joint with parallel planes 0.83 -> 1.20 %), with 10-45 % fewer
-// tetrahedra; on the ball with a size field it kept 88.4 % of the edges within
-// 1.5 x the field, where an eighth kept 86.6 %.
+// The shortest spacing a thin piece of a cut triangle may ask for, as a
+// fraction of the local size: of the contour beside it (ContourSubdivision.h)
+// and of the boundary refinement's segment across it (SurfaceRefinement.cpp).
+// Both must use the same value, or the two sides of the piece get points at
+// different spacings and its mesh is a fan of caps. A quarter against an
+// eighth (corpus, K = 16, 2 ranks, 8 surfaces x both strategies, measured
+// with the quarter for every segment): the share of tetrahedra under 10
+// degrees fell on 12 of 16 runs (elephant with parallel planes 1.88 -> 1.31 %,
+// fandisk 0.96 -> 0.61 %) and rose on 4 (OCCT screw with parallel planes
+// 0.50 -> 0.75 %), with 10-45 % fewer tetrahedra; on the ball with a size
+// field it kept 88.4 % of the edges within 1.5 x the field, where an eighth
+// kept 86.6 %. Segments away from contours keep an eighth.
 constexpr double kThinPieceSpacingFraction = 0.25;
 } // namespace ptm
 #endif

@@ -152,15 +152,20 @@ using SegmentPoints = std::map<UndirectedEdge, std::vector<Index>>;
 // can be well shaped, as TetGen -q splits encroached segments. Corners of
 // good facets do not count: splitting the slightly long edge of a good
 // triangle only makes worse ones (a gmsh fillet from the corpus, K = 1: 0.33 %
-// of the tetrahedra under 10 degrees instead of 0.14 %). Never below
-// kThinPieceSpacingFraction of the size (SizeFunction.h), the floor the
-// contours beside thin pieces are split at too: the slivers a cut leaves
-// next to a contour are poor facets, and a floor of size / 32 split the long
-// input edges beside them into 121,000 points on CGAL's joint at K = 16
-// (804,000 tetrahedra, 1.29 % under 10 degrees, where K = 2 makes 86,000);
-// size / 8 gave 295,000 and 1.44 % (before the contours were split alike).
-// The price is on very thin input strips: OpenSCAD's CSG example, K = 1,
-// 7.3 % under 10 degrees with size / 8 instead of 6.1 % with size / 32.
+// of the tetrahedra under 10 degrees instead of 0.14 %). Never below an
+// eighth of the size (kSegmentSpacingFloor): a floor of size / 32 split the
+// long input edges beside the slivers a cut leaves into 121,000 points on
+// CGAL's joint at K = 16 (804,000 tetrahedra, 1.29 % under 10 degrees, where
+// K = 2 makes 86,000); size / 8 gave 295,000 and 1.44 %. The price is on
+// very thin input strips: OpenSCAD's CSG example, K = 1, 7.3 % under 10
+// degrees instead of 6.1 % with size / 32. A corner on a contour counts
+// down to kThinPieceSpacingFraction of the size only (SizeFunction.h), the
+// floor the contour beside a thin cut piece is split at, so the piece gets
+// points at one spacing on both sides. The quarter for every corner cost
+// the OpenSCAD and gmsh exports (their thin input triangles): at K = 2
+// OpenSCAD example005 went from 1.65 % to 2.53 % under 10 degrees.
+constexpr double kSegmentSpacingFloor = 1.0 / 8.0;
+
 class SegmentSpacing
 {
 public:
@@ -170,7 +175,15 @@ public:
     , Size(size)
     , SizeAt(sizeAt)
     , FacetsOf(points.size())
+    , OnInterface(points.size(), 0)
   {
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+    {
+      for (Index p : triangles[t])
+      {
+        OnInterface[p] = OnInterface[p] || label[t] < 0;
+      }
+    }
     int facets = 0;
     for (int l : label)
     {
@@ -233,10 +246,11 @@ public:
             {
               continue;
             }
-            spacing = std::min(spacing, distanceToSegment(this->Points[v], pa, this->Points[b]));
+            const double floor = this->OnInterface[v] ? kThinPieceSpacingFraction : kSegmentSpacingFloor;
+            spacing = std::min(spacing, std::max(floor * local, distanceToSegment(this->Points[v], pa, this->Points[b])));
           }
         }
-    return std::max(spacing, kThinPieceSpacingFraction * local);
+    return spacing;
   }
 
 private:
@@ -268,6 +282,7 @@ private:
   double Size;
   const SizeFunction& SizeAt;
   std::vector<std::vector<int>> FacetsOf; // the facets each point is a corner of a poor triangle of
+  std::vector<char> OnInterface;          // a point of an interface triangle (a contour point)
   std::unordered_map<std::uint64_t, std::vector<Index>> Cells;
 };
 
