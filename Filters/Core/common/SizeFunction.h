@@ -3,12 +3,28 @@
 // The type every stage takes a size field as.
 #include "Vec3.h"
 
+#include <algorithm>
 #include <functional>
 
 namespace ptm
 {
 // A size field: the edge length wanted at a point in space. Empty: none.
 using SizeFunction = std::function<double(const Vec3&)>;
+
+// The size wanted at p under the largest size `size`: the field where it is
+// set, positive and below `size`, never under size / 1000 (a field near 0,
+// or crossing 0 between two positive points, must not split an edge into
+// millions of parts); `size` elsewhere. The contour subdivision and the
+// boundary refinement's segments both size by it.
+inline double cappedSizeAt(const SizeFunction& sizeAt, double size, const Vec3& p)
+{
+  if (!sizeAt)
+  {
+    return size;
+  }
+  const double field = sizeAt(p);
+  return field > 0 && field < size ? std::max(field, 1e-3 * size) : size;
+}
 
 // The shortest spacing a thin piece of a cut triangle may ask for, as a
 // fraction of the local size: of the contour beside it (ContourSubdivision.h)

@@ -8,17 +8,9 @@ namespace ptm
 {
 namespace
 {
-// The size wanted at p: the field where it is set, positive and below
-// `size`, never under size / 1000 (a field near 0 must not split an edge
-// into millions of parts); `size` elsewhere.
 double localSize(const ContourSubdivisionOptions& options, const Vec3& p)
 {
-  if (!options.sizeAt)
-  {
-    return options.size;
-  }
-  const double field = options.sizeAt(p);
-  return field > 0 && field < options.size ? std::max(field, 1e-3 * options.size) : options.size;
+  return cappedSizeAt(options.sizeAt, options.size, p);
 }
 
 // The points that split from-to into `parts` equal parts.

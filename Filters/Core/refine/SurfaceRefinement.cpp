@@ -254,18 +254,7 @@ public:
   }
 
 private:
-  // the size field at p where it is set and positive, within [Size / 1000,
-  // Size] (a field crossing 0 between two positive corners must not split a
-  // segment without end)
-  double LocalSize(const Vec3& p) const
-  {
-    if (!this->SizeAt)
-    {
-      return this->Size;
-    }
-    const double field = this->SizeAt(p);
-    return field > 0 && field < this->Size ? std::max(field, 1e-3 * this->Size) : this->Size;
-  }
+  double LocalSize(const Vec3& p) const { return cappedSizeAt(this->SizeAt, this->Size, p); }
   std::array<long long, 3> CellOf(const Vec3& p) const
   {
     return { static_cast<long long>(std::floor(p[0] / this->Size)),
