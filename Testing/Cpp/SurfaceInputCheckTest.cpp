@@ -1,5 +1,6 @@
 // Every class of bad input: refused with a message that names it (count and
 // location), or repaired with a warning when the repair is safe.
+#include "SelfIntersectionCheck.h"
 #include "SurfaceInputCheck.h"
 #include "TestSurfaces.h"
 
@@ -139,6 +140,36 @@ TEST(SurfaceInputCheck, OverlappingBoxesIntersectThemselves)
   p = prepareInputSurface(both, small);
   EXPECT_TRUE(p.ok);
   EXPECT_TRUE(mentions(allWarnings(p), "self-intersections were not checked"));
+}
+
+// The cutter checks patches of a part (VolumeBalancedDecomposition.cpp:
+// partCrossesItself). A patch may have two fans at one point (a bow tie);
+// orienting the soup splits that point, after which the two triangles
+// merely touching there count as crossing. So a patch is checked only where
+// no triangle checked has a split corner.
+TEST(SelfIntersectionCheck, PatchIsCheckedOnlyAwayFromItsSplitCorners)
+{
+  TriangleSurface patch;
+  patch.points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { -1, 0, 0 }, { 0, -1, 0 }, // bow tie at 0
+    { 5, 0, 0 }, { 6, 0, 0 }, { 5, 1, 0 },                                          // C
+    { 5.2, 0.2, -1 }, { 5.4, 0.2, 1 }, { 5.2, 0.5, 1 },                             // D, through C
+    { 10, 0, 0 }, { 11, 0, 0 }, { 10, 1, 0 } };                                     // E, apart
+  patch.triangles = { { 0, 1, 2 }, { 0, 3, 4 }, { 5, 6, 7 }, { 8, 9, 10 }, { 11, 12, 13 } };
+
+  SelfIntersectionReport bowTie = checkPatchSelfIntersection(patch, { 0, 1 });
+  EXPECT_FALSE(bowTie.checked) << "a corner of a triangle checked was split";
+  const SelfIntersectionReport repaired = checkSelfIntersection(patch, { 0, 1 });
+  EXPECT_TRUE(repaired.checked) << repaired.note;
+  EXPECT_TRUE(repaired.intersects) << "after the split the bow tie's touch counts as a crossing";
+
+  const SelfIntersectionReport crossing = checkPatchSelfIntersection(patch, { 2, 3 });
+  ASSERT_TRUE(crossing.checked) << crossing.note;
+  EXPECT_TRUE(crossing.intersects);
+  EXPECT_EQ(crossing.firstTriangle + crossing.secondTriangle, 5);
+
+  const SelfIntersectionReport apart = checkPatchSelfIntersection(patch, { 2, 4 });
+  ASSERT_TRUE(apart.checked) << apart.note;
+  EXPECT_FALSE(apart.intersects);
 }
 
 TEST(SurfaceInputCheck, FlippedTrianglesAndInsideOutSphereAreRepaired)

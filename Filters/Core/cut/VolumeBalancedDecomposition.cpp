@@ -151,135 +151,239 @@ bool volumesAddUp(const SurfaceComplex& c, double parts, double whole)
   return std::fabs(parts - whole) <= tolerance;
 }
 
-// Whether the surface of part `cell` crosses itself where a cut changed it
-// (within `cutBox`, the box of the new interface): the faces of the part (surface triangles and its
-// interface regions, triangulated) that reach into the box of the new
-// interface, checked with CGAL's exact predicates. Farther faces are as they
-// were, already checked (with the input or the parent part). Checking all
-// faces, with the regions refined as the interface triangulator does, made
-// the decomposition of CGAL's 11,520-triangle knot2 at K = 16 five times
-// slower (0.97 s to 5.3 s); the box and the least refined triangulation
-// (any covers the flat region alike) leave it under twice as slow. A region
-// that cannot be triangulated counts as crossing.
-bool partCrossesItself(const SurfaceComplex& c, int cell, const Box& cutBox)
+// The interface regions of a part and what a cut did to them. A region of
+// one of the cut's two parts that reaches into the box of the new interface
+// (`cutBox`) may have been split by the cut, and is triangulated anew as a
+// whole (missed at first: a piece of example005's first interface crossed a
+// surface triangle far from the cut that split it, K = 10); so may a region
+// another part shares with them. A flat one is a section of the part by its
+// plane, which no face of the part crosses, however it is triangulated. A
+// region bent through points left off its plane (snapped vertices of the
+// input, moved chord points) differs from the section only around those
+// points: within the box of the surface triangles at each (`zones`), where
+// the section runs through these triangles and the region's boundary runs
+// through the point.
+struct PartRegions
 {
   std::vector<const InterfaceRegion*> regions;
+  std::vector<std::vector<Index>> points;
+  std::vector<Box> boxes;
+  std::vector<Box> zones;
+};
+
+PartRegions regionsOfPart(const SurfaceComplex& c, int cell, const Box& cutBox, int below, int above)
+{
+  PartRegions r;
+  const double roundOff = 1e-10 * norm(cutBox.hi - cutBox.lo);
+  const bool cutPart = cell == below || cell == above;
+  std::unordered_map<Index, std::size_t> zoneOf;
   for (const InterfaceRegion& region : c.interfaces)
   {
-    if (region.pair[0] == cell || region.pair[1] == cell)
+    if (region.pair[0] != cell && region.pair[1] != cell)
     {
-      regions.push_back(&region);
+      continue;
     }
-  }
-  // A region reaching into the box may have been split by the cut and is
-  // triangulated anew as a whole, so everything reaching into its box is
-  // near too (missed at first: a piece of example005's first interface
-  // crossed a surface triangle far from the cut that split it, K = 10).
-  std::vector<char> regionNear(regions.size(), 0);
-  Box nearBox = cutBox;
-  std::vector<std::vector<Index>> regionPointLists(regions.size());
-  for (std::size_t r = 0; r < regions.size(); ++r)
-  {
-    regionPointLists[r] = regionPoints(*regions[r]);
+    r.regions.push_back(&region);
+    r.points.push_back(regionPoints(region));
     Box box;
-    for (Index v : regionPointLists[r])
+    for (Index v : r.points.back())
     {
       box.add(c.points[v]);
     }
-    if (box.overlaps(cutBox))
+    r.boxes.push_back(box);
+    const bool shared = region.pair[0] == below || region.pair[0] == above || region.pair[1] == below ||
+      region.pair[1] == above;
+    if (!(cutPart || shared) || !box.overlaps(cutBox))
     {
-      regionNear[r] = 1;
-      nearBox.add(box.lo);
-      nearBox.add(box.hi);
+      continue;
+    }
+    const CuttingPlane& plane = c.planes[region.planeId];
+    for (Index v : r.points.back())
+    {
+      if (std::fabs(dot(plane.normal, c.points[v] - plane.origin)) > roundOff && !zoneOf.count(v))
+      {
+        zoneOf.emplace(v, r.zones.size());
+        r.zones.emplace_back();
+        r.zones.back().add(c.points[v]);
+      }
     }
   }
-  // A flat region is a section of the part by its plane, which no face of
-  // the part crosses; only a region bent through points left off its plane
-  // (snapped vertices of the input) can cross one. None near: nothing to do.
-  bool bent = false;
-  const double roundOff = 1e-10 * norm(nearBox.hi - nearBox.lo);
-  for (std::size_t r = 0; r < regions.size() && !bent; ++r)
+  for (std::size_t i = 0; i < c.triangles.size() && !zoneOf.empty(); ++i)
   {
-    const CuttingPlane& plane = c.planes[regions[r]->planeId];
-    for (std::size_t k = 0; k < regionPointLists[r].size() && regionNear[r] && !bent; ++k)
+    const Triangle& t = c.triangles[i];
+    if (c.trianglePairs[i][0] != cell || c.trianglePairs[i][1] != -1)
     {
-      bent = std::fabs(dot(plane.normal, c.points[regionPointLists[r][k]] - plane.origin)) > roundOff;
+      continue;
+    }
+    for (Index v : t)
+    {
+      const auto it = zoneOf.find(v);
+      for (Index w : t)
+      {
+        if (it != zoneOf.end())
+        {
+          r.zones[it->second].add(c.points[w]);
+        }
+      }
     }
   }
-  if (!bent)
+  return r;
+}
+
+// Appends the triangulation of region k of part `cell` to `part`. False if
+// it cannot be triangulated.
+bool appendRegion(const SurfaceComplex& c, int cell, const PartRegions& r, std::size_t k,
+  const InterfaceTriangulationOptions& options, std::unordered_map<Index, Index>& local,
+  TriangleSurface& part)
+{
+  const InterfaceRegion& region = *r.regions[k];
+  const InterfaceTriangulationResult tr = triangulateInterface(planarRegionOf(c, region, r.points[k]), options);
+  if (!tr.ok)
   {
     return false;
   }
-  // the faces away from it only close the surface: any triangulation of
-  // their regions will do, the least refined one
-  InterfaceTriangulationOptions cover;
-  cover.minimumAngleDegrees = 1.0;
-  cover.maximumEdgeLength = std::numeric_limits<double>::max();
-  // the regions near the cut as the triangulator refines them, unsmoothed:
-  // smoothing took a third of the cutter's time (ball of 41,000 triangles,
-  // K = 16: 10.5 s)
-  InterfaceTriangulationOptions nearOptions;
-  nearOptions.smooth = false;
-  TriangleSurface part;
-  std::vector<Index> near;
-  std::unordered_map<Index, Index> local;
-  auto localPoint = [&](Index v) {
+  std::vector<Index> ids;
+  for (Index v : r.points[k])
+  {
     auto [it, inserted] = local.emplace(v, static_cast<Index>(part.points.size()));
     if (inserted)
     {
       part.points.push_back(c.points[v]);
     }
-    return it->second;
+    ids.push_back(it->second);
+  }
+  for (const Vec3& p : tr.triangulation.newPoints)
+  {
+    ids.push_back(static_cast<Index>(part.points.size()));
+    part.points.push_back(p);
+  }
+  const bool outward = region.pair[0] == cell;
+  for (const Triangle& t : tr.triangulation.triangles)
+  {
+    part.triangles.push_back(
+      outward ? Triangle{ ids[t[0]], ids[t[1]], ids[t[2]] } : Triangle{ ids[t[0]], ids[t[2]], ids[t[1]] });
+  }
+  return true;
+}
+
+// The surface of part `cell` as triangles, for partCrossesItself: its
+// surface triangles and the regions reaching into a zone, refined to the
+// triangulator's minimum angle without a size bound, unsmoothed. At the
+// boundary, where the zones are, that gives triangles of the boundary's
+// spacing, as the triangulator's; the size bound and the smoothing only
+// add work inside (a ball of 23,592 triangles at K = 64 with parallel
+// planes: the whole cutter 5.9 s with the size bound, 2.2 s without; the
+// smoothing took a third of it before). The faces reaching into a zone are
+// listed in `near`; without `whole` the rest is left out (but the faces at
+// their corners, which close their fans for CGAL). With it, the regions
+// far from every zone are triangulated the least refined way (they only
+// close the surface). False if a region cannot be triangulated.
+bool partSurface(const SurfaceComplex& c, int cell, const PartRegions& r, bool whole,
+  TriangleSurface& part, std::vector<Index>& near)
+{
+  InterfaceTriangulationOptions cover;
+  cover.minimumAngleDegrees = 1.0;
+  cover.maximumEdgeLength = std::numeric_limits<double>::max();
+  InterfaceTriangulationOptions refined;
+  refined.smooth = false;
+  refined.maximumEdgeLength = std::numeric_limits<double>::max();
+  auto inZone = [&](const Box& box) {
+    return std::any_of(r.zones.begin(), r.zones.end(), [&](const Box& z) { return z.overlaps(box); });
   };
+  std::unordered_map<Index, Index> local;
+  TriangleSurface all;
+  for (std::size_t k = 0; k < r.regions.size(); ++k)
+  {
+    const bool nearZone = inZone(r.boxes[k]);
+    if ((whole || nearZone) && !appendRegion(c, cell, r, k, nearZone ? refined : cover, local, all))
+    {
+      return false;
+    }
+  }
   for (std::size_t i = 0; i < c.triangles.size(); ++i)
   {
+    const Triangle& t = c.triangles[i];
     if (c.trianglePairs[i][0] == cell && c.trianglePairs[i][1] == -1)
     {
-      const Triangle& t = c.triangles[i];
-      Box box;
-      for (Index v : t)
+      Triangle ids{};
+      for (int j = 0; j < 3; ++j)
       {
-        box.add(c.points[v]);
+        ids[j] = local.emplace(t[j], static_cast<Index>(all.points.size())).first->second;
+        if (ids[j] == static_cast<Index>(all.points.size()))
+        {
+          all.points.push_back(c.points[t[j]]);
+        }
       }
-      if (box.overlaps(nearBox))
-      {
-        near.push_back(static_cast<Index>(part.triangles.size()));
-      }
-      part.triangles.push_back({ localPoint(t[0]), localPoint(t[1]), localPoint(t[2]) });
+      all.triangles.push_back(ids);
     }
   }
-  for (std::size_t k = 0; k < regions.size(); ++k)
+  // the near faces, and (to close the fans at their corners, which CGAL
+  // needs to see two faces meet there) the faces at their corners
+  std::vector<char> isNear(all.triangles.size(), 0), atNearCorner(all.points.size(), 0);
+  for (std::size_t i = 0; i < all.triangles.size(); ++i)
   {
-    const InterfaceRegion& region = *regions[k];
-    const std::vector<Index>& points = regionPointLists[k];
-    const InterfaceTriangulationResult r = triangulateInterface(
-      planarRegionOf(c, region, points), regionNear[k] ? nearOptions : cover);
-    if (!r.ok)
+    Box box;
+    for (Index v : all.triangles[i])
     {
-      return true;
+      box.add(all.points[v]);
     }
-    std::vector<Index> ids;
-    for (Index v : points)
+    isNear[i] = inZone(box);
+    for (Index v : all.triangles[i])
     {
-      ids.push_back(localPoint(v));
-    }
-    for (const Vec3& p : r.triangulation.newPoints)
-    {
-      ids.push_back(static_cast<Index>(part.points.size()));
-      part.points.push_back(p);
-    }
-    const bool outward = region.pair[0] == cell;
-    for (const Triangle& t : r.triangulation.triangles)
-    {
-      if (regionNear[k])
-      {
-        near.push_back(static_cast<Index>(part.triangles.size()));
-      }
-      part.triangles.push_back(
-        outward ? Triangle{ ids[t[0]], ids[t[1]], ids[t[2]] } : Triangle{ ids[t[0]], ids[t[2]], ids[t[1]] });
+      atNearCorner[v] |= isNear[i];
     }
   }
-  const SelfIntersectionReport report = checkSelfIntersection(part, near);
+  part.points = std::move(all.points);
+  for (std::size_t i = 0; i < all.triangles.size(); ++i)
+  {
+    const Triangle& t = all.triangles[i];
+    if (isNear[i])
+    {
+      near.push_back(static_cast<Index>(part.triangles.size()));
+    }
+    if (whole || atNearCorner[t[0]] || atNearCorner[t[1]] || atNearCorner[t[2]])
+    {
+      part.triangles.push_back(t);
+    }
+  }
+  return true;
+}
+
+// Whether the surface of part `cell` crosses itself where a cut of `below`
+// and `above` changed it (within `cutBox`, the box of the new interface),
+// checked with CGAL's exact predicates: the faces reaching into the zones
+// of regionsOfPart. Farther faces are as they were, already checked (with
+// the input or the parent part). Only the near faces are handed to CGAL
+// when they form a polygon mesh by themselves: building the whole part for
+// every check made the cutter's time grow with K (a ball of 23,592
+// triangles, K = 64, recursive bisection: 62 % of 8.6 s; the neighbours of
+// a part cut early are whole halves). A region that cannot be triangulated
+// counts as crossing.
+bool partCrossesItself(const SurfaceComplex& c, int cell, const Box& cutBox, int below, int above)
+{
+  const PartRegions r = regionsOfPart(c, cell, cutBox, below, above);
+  if (r.zones.empty())
+  {
+    return false;
+  }
+  TriangleSurface patch;
+  std::vector<Index> near;
+  if (!partSurface(c, cell, r, false, patch, near))
+  {
+    return true;
+  }
+  SelfIntersectionReport report = checkPatchSelfIntersection(patch, near);
+  if (report.checked)
+  {
+    return report.intersects;
+  }
+  TriangleSurface part;
+  near.clear();
+  if (!partSurface(c, cell, r, true, part, near))
+  {
+    return true;
+  }
+  report = checkSelfIntersection(part, near);
   return !report.checked || report.intersects;
 }
 
@@ -675,7 +779,7 @@ bool PartCut::soundParts(const Trial& trial) const
   }
   for (int part : parts)
   {
-    if (partCrossesItself(trial.complex, part, cutBox))
+    if (partCrossesItself(trial.complex, part, cutBox, below, above))
     {
       return false;
     }

@@ -6,6 +6,7 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
 #include <iterator>
 #include <vector>
 
@@ -21,15 +22,30 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 struct Enough
 {
 };
-} // namespace
 
-SelfIntersectionReport checkSelfIntersection(const TriangleSurface& s, std::size_t limit)
+// Whether orienting the soup split a point of one of the triangles `among`
+// (it renumbers the split copies).
+bool splitAtAny(const std::vector<std::vector<std::size_t>>& before,
+  const std::vector<std::vector<std::size_t>>& after, const std::vector<Index>& among)
 {
-  return checkSelfIntersection(s, std::vector<Index>(), limit);
+  for (Index f : among)
+  {
+    std::vector<std::size_t> a = before[f], b = after[f];
+    std::sort(a.begin(), a.end());
+    std::sort(b.begin(), b.end());
+    if (a != b)
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
-SelfIntersectionReport checkSelfIntersection(
-  const TriangleSurface& s, const std::vector<Index>& among, std::size_t limit)
+// Pairs among the triangles `among` (all if empty). A soup that is not a
+// polygon mesh is oriented first, which splits its non-manifold points;
+// with `patch`, the check is off if that split a point of `among`.
+SelfIntersectionReport checkSoup(
+  const TriangleSurface& s, const std::vector<Index>& among, std::size_t limit, bool patch)
 {
   SelfIntersectionReport report;
   std::vector<K::Point_3> points;
@@ -48,7 +64,13 @@ SelfIntersectionReport checkSelfIntersection(
   // the soup's faces keep their order in the mesh, so face i is triangle i
   if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
   {
+    const std::vector<std::vector<std::size_t>> before = patch ? polygons : std::vector<std::vector<std::size_t>>();
     PMP::orient_polygon_soup(points, polygons); // duplicates non-manifold points
+    if (patch && splitAtAny(before, polygons, among))
+    {
+      report.note = "the patch splits at a corner of a triangle checked";
+      return report;
+    }
     if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
     {
       report.note = "the surface is not a manifold polygon mesh";
@@ -113,5 +135,23 @@ SelfIntersectionReport checkSelfIntersection(
     report.crossings.emplace_back(static_cast<Index>(f), static_cast<Index>(g));
   }
   return report;
+}
+} // namespace
+
+SelfIntersectionReport checkSelfIntersection(const TriangleSurface& s, std::size_t limit)
+{
+  return checkSoup(s, std::vector<Index>(), limit, false);
+}
+
+SelfIntersectionReport checkSelfIntersection(
+  const TriangleSurface& s, const std::vector<Index>& among, std::size_t limit)
+{
+  return checkSoup(s, among, limit, false);
+}
+
+SelfIntersectionReport checkPatchSelfIntersection(
+  const TriangleSurface& patch, const std::vector<Index>& among, std::size_t limit)
+{
+  return checkSoup(patch, among, limit, true);
 }
 } // namespace ptm

@@ -29,5 +29,14 @@ SelfIntersectionReport checkSelfIntersection(const TriangleSurface& surface, std
 // listed ones are all that may touch what changed.
 SelfIntersectionReport checkSelfIntersection(
   const TriangleSurface& surface, const std::vector<Index>& among, std::size_t limit = 1);
+
+// As the above, on a patch cut out of a closed surface (some of its
+// triangles, sharing the points they share there). Orienting a soup splits
+// the points where fans of the patch meet, and two triangles that meet at a
+// split point would count as crossing: if that splits a corner of a
+// triangle of `among`, `checked` is false and the caller checks the whole
+// surface.
+SelfIntersectionReport checkPatchSelfIntersection(
+  const TriangleSurface& patch, const std::vector<Index>& among, std::size_t limit = 1);
 } // namespace ptm
 #endif
