@@ -32,7 +32,7 @@ std::vector<Index> cellPoints(const SurfaceComplex& c, int cell)
   return points;
 }
 
-PlaneClearance::PlaneClearance(const SurfaceComplex& c, int cell, const Vec3& normal)
+std::vector<PointSpacing> shortestEdges(const SurfaceComplex& c, int cell)
 {
   std::map<Index, double> shortest;
   auto touch = [&](Index a, Index b) {
@@ -63,13 +63,29 @@ PlaneClearance::PlaneClearance(const SurfaceComplex& c, int cell, const Vec3& no
       }
     }
   }
+  std::vector<PointSpacing> spacing;
   for (const auto& [v, h] : shortest)
   {
     if (h > 0)
     {
-      this->Points.emplace_back(dot(normal, c.points[v]), h);
-      this->LargestEdge = std::max(this->LargestEdge, h);
+      spacing.push_back({ v, h });
     }
+  }
+  return spacing;
+}
+
+PlaneClearance::PlaneClearance(const SurfaceComplex& c, int cell, const Vec3& normal)
+  : PlaneClearance(c, shortestEdges(c, cell), normal)
+{
+}
+
+PlaneClearance::PlaneClearance(const SurfaceComplex& c, const std::vector<PointSpacing>& spacing, const Vec3& normal)
+{
+  this->Points.reserve(spacing.size());
+  for (const PointSpacing& s : spacing)
+  {
+    this->Points.emplace_back(dot(normal, c.points[s.point]), s.shortest);
+    this->LargestEdge = std::max(this->LargestEdge, s.shortest);
   }
   std::sort(this->Points.begin(), this->Points.end());
 }

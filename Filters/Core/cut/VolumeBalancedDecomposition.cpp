@@ -440,6 +440,7 @@ struct PartCut
   double target = 0;          // volume wanted below the plane
   double allowed = 0;         // its error allowed: a quarter of the tolerance of one subdomain
   Vec3 centroid{ 0, 0, 0 };   // of the part's points: each plane's origin is put nearest to it
+  std::vector<PointSpacing> spacing; // of the part, for PlaneClearance
   std::string lastError;
 };
 
@@ -468,6 +469,7 @@ PartCut::PartCut(SurfaceComplex& complex, const DecompositionOptions& options_,
     centroid = centroid + c.points[p];
   }
   centroid = (1.0 / std::max<double>(1.0, static_cast<double>(points.size()))) * centroid;
+  spacing = shortestEdges(c, cell);
 }
 
 // A split that pinches a part (PlaneSplitStats::pinchedPoints) is tried
@@ -543,7 +545,7 @@ Trial PartCut::clearestBalancedCut(const Vec3& n, Trial&& balanced, double& at)
   const double budget = clearanceBudget();
   const double low = at + std::min(0.0, (-budget - balanced.missing) / balanced.area);
   const double high = at + std::max(0.0, (budget - balanced.missing) / balanced.area);
-  const PlaneClearance clearance(c, cell, n);
+  const PlaneClearance clearance(c, spacing, n);
   const double clearest = clearance.clearestOffset(low, high, at, kEnoughClearance);
   if (clearest == at || !(clearance.at(clearest) > clearance.at(at)))
   {
@@ -577,7 +579,7 @@ double PartCut::predictedClearance(const Vec3& n) const
   const double area = (measure.below(at + step) - measure.below(at - step)) / (2.0 * step);
   const double budget = clearanceBudget();
   const double half = area > 0 ? std::min(budget / area, 0.5 * span) : 0.0;
-  const PlaneClearance clearance(c, cell, n);
+  const PlaneClearance clearance(c, spacing, n);
   return std::min(kEnoughClearance,
     clearance.at(clearance.clearestOffset(at - half, at + half, at, kEnoughClearance)));
 }

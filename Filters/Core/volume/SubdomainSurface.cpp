@@ -25,7 +25,8 @@ bool extractSubdomainSurface(const SurfaceComplex& c, const std::vector<Index>& 
   auto gid = [&](Index p) { return globalIds.empty() ? p : globalIds[p]; };
   struct Face
   {
-    std::array<Index, 3> ids; // global ids, smallest first
+    std::array<Index, 3> ids;    // global ids, smallest first
+    std::array<Index, 3> points; // the complex's points, in the same order
     Index source;
     int other;
   };
@@ -45,7 +46,8 @@ bool extractSubdomainSurface(const SurfaceComplex& c, const std::vector<Index>& 
     std::array<Index, 3> g{ gid(t[0]), gid(t[1]), gid(t[2]) };
     const int first = static_cast<int>(std::min_element(g.begin(), g.end()) - g.begin());
     std::rotate(g.begin(), g.begin() + first, g.end());
-    faces.push_back({ g, c.sourceFaces.empty() ? -1 : c.sourceFaces[i], pair[0] == s ? pair[1] : pair[0] });
+    std::rotate(t.begin(), t.begin() + first, t.end());
+    faces.push_back({ g, t, c.sourceFaces.empty() ? -1 : c.sourceFaces[i], pair[0] == s ? pair[1] : pair[0] });
   }
   if (faces.empty())
   {
@@ -84,27 +86,23 @@ bool extractSubdomainSurface(const SurfaceComplex& c, const std::vector<Index>& 
     return false;
   }
 
-  std::map<Index, Index> localOf; // global -> local point, in global id order
+  // the subdomain's points in global id order; only its own faces are
+  // looked at (a map of every point of the complex, made for each
+  // subdomain, took 13 % of a K = 64 run on one rank)
   std::map<Index, Index> pointOfGlobal;
-  for (std::size_t i = 0; i < c.triangles.size(); ++i)
-  {
-    for (Index p : c.triangles[i])
-    {
-      pointOfGlobal.emplace(gid(p), p);
-    }
-  }
   for (const Face& f : faces)
   {
-    for (Index g : f.ids)
+    for (int k = 0; k < 3; ++k)
     {
-      localOf.emplace(g, 0);
+      pointOfGlobal.emplace(f.ids[k], f.points[k]);
     }
   }
-  for (auto& [g, local] : localOf)
+  std::map<Index, Index> localOf; // global -> local point
+  for (const auto& [g, p] : pointOfGlobal)
   {
-    local = static_cast<Index>(out.globalIds.size());
+    localOf.emplace(g, static_cast<Index>(out.globalIds.size()));
     out.globalIds.push_back(g);
-    out.surface.points.push_back(c.points[pointOfGlobal.at(g)]);
+    out.surface.points.push_back(c.points[p]);
   }
   for (const Face& f : faces)
   {
