@@ -169,6 +169,7 @@ struct PartRegions
   std::vector<std::vector<Index>> points;
   std::vector<Box> boxes;
   std::vector<Box> zones;
+  std::vector<Index> zonePoints; // the point of each zone
 };
 
 PartRegions regionsOfPart(const SurfaceComplex& c, int cell, const Box& cutBox, int below, int above)
@@ -205,6 +206,7 @@ PartRegions regionsOfPart(const SurfaceComplex& c, int cell, const Box& cutBox, 
         zoneOf.emplace(v, r.zones.size());
         r.zones.emplace_back();
         r.zones.back().add(c.points[v]);
+        r.zonePoints.push_back(v);
       }
     }
   }
@@ -266,59 +268,14 @@ bool appendRegion(const SurfaceComplex& c, int cell, const PartRegions& r, std::
   return true;
 }
 
-// The surface of part `cell` as triangles, for partCrossesItself: its
-// surface triangles and the regions reaching into a zone, refined to the
-// triangulator's minimum angle without a size bound, unsmoothed. At the
-// boundary, where the zones are, that gives triangles of the boundary's
-// spacing, as the triangulator's; the size bound and the smoothing only
-// add work inside (a ball of 23,592 triangles at K = 64 with parallel
-// planes: the whole cutter 5.9 s with the size bound, 2.2 s without; the
-// smoothing took a third of it before). The faces reaching into a zone are
-// listed in `near`; without `whole` the rest is left out (but the faces at
-// their corners, which close their fans for CGAL). With it, the regions
-// far from every zone are triangulated the least refined way (they only
-// close the surface). False if a region cannot be triangulated.
-bool partSurface(const SurfaceComplex& c, int cell, const PartRegions& r, bool whole,
-  TriangleSurface& part, std::vector<Index>& near)
+// Moves the triangles of `all` reaching into a zone (`inZone` of their
+// box) into `part`, listed in `near`, with the faces at their corners (to
+// close the fans there, which CGAL needs to see two faces meet); with
+// `whole`, every triangle.
+template <typename InZone>
+void selectNear(TriangleSurface&& all, const InZone& inZone, bool whole, TriangleSurface& part,
+  std::vector<Index>& near)
 {
-  InterfaceTriangulationOptions cover;
-  cover.minimumAngleDegrees = 1.0;
-  cover.maximumEdgeLength = std::numeric_limits<double>::max();
-  InterfaceTriangulationOptions refined;
-  refined.smooth = false;
-  refined.maximumEdgeLength = std::numeric_limits<double>::max();
-  auto inZone = [&](const Box& box) {
-    return std::any_of(r.zones.begin(), r.zones.end(), [&](const Box& z) { return z.overlaps(box); });
-  };
-  std::unordered_map<Index, Index> local;
-  TriangleSurface all;
-  for (std::size_t k = 0; k < r.regions.size(); ++k)
-  {
-    const bool nearZone = inZone(r.boxes[k]);
-    if ((whole || nearZone) && !appendRegion(c, cell, r, k, nearZone ? refined : cover, local, all))
-    {
-      return false;
-    }
-  }
-  for (std::size_t i = 0; i < c.triangles.size(); ++i)
-  {
-    const Triangle& t = c.triangles[i];
-    if (c.trianglePairs[i][0] == cell && c.trianglePairs[i][1] == -1)
-    {
-      Triangle ids{};
-      for (int j = 0; j < 3; ++j)
-      {
-        ids[j] = local.emplace(t[j], static_cast<Index>(all.points.size())).first->second;
-        if (ids[j] == static_cast<Index>(all.points.size()))
-        {
-          all.points.push_back(c.points[t[j]]);
-        }
-      }
-      all.triangles.push_back(ids);
-    }
-  }
-  // the near faces, and (to close the fans at their corners, which CGAL
-  // needs to see two faces meet there) the faces at their corners
   std::vector<char> isNear(all.triangles.size(), 0), atNearCorner(all.points.size(), 0);
   for (std::size_t i = 0; i < all.triangles.size(); ++i)
   {
@@ -346,6 +303,116 @@ bool partSurface(const SurfaceComplex& c, int cell, const PartRegions& r, bool w
       part.triangles.push_back(t);
     }
   }
+}
+
+// Each zone grown by the boxes of the triangles of `surface` at its point
+// (`zoneAt`: the zone of a point of `surface`).
+void growZones(const TriangleSurface& surface, const std::unordered_map<Index, std::size_t>& zoneAt,
+  std::vector<Box>& zones)
+{
+  for (const Triangle& t : surface.triangles)
+  {
+    for (Index v : t)
+    {
+      const auto it = zoneAt.find(v);
+      for (Index w : t)
+      {
+        if (it != zoneAt.end())
+        {
+          zones[it->second].add(surface.points[w]);
+        }
+      }
+    }
+  }
+}
+
+// The surface of part `cell` as triangles, for partCrossesItself: its
+// surface triangles and the regions reaching into a zone, refined to the
+// triangulator's minimum angle without a size bound, unsmoothed. At the
+// boundary, where the zones are, that gives triangles of the boundary's
+// spacing, as the triangulator's; the size bound and the smoothing only
+// add work inside (a ball of 23,592 triangles at K = 64 with parallel
+// planes: the whole cutter 5.9 s with the size bound, 2.2 s without; the
+// smoothing took a third of it before). The zones are grown by the region
+// triangles at their points too (where interfaces meet inside the object a
+// point has no surface triangle). The faces reaching into a zone are
+// listed in `near`; without `whole` the rest is left out (but the faces at
+// their corners, which close their fans for CGAL). With it, the regions
+// far from every zone are triangulated the least refined way (they only
+// close the surface). False if a region cannot be triangulated.
+bool partSurface(const SurfaceComplex& c, int cell, const PartRegions& r, bool whole,
+  TriangleSurface& part, std::vector<Index>& near)
+{
+  InterfaceTriangulationOptions refined;
+  refined.smooth = false;
+  refined.maximumEdgeLength = std::numeric_limits<double>::max();
+  std::vector<Box> zones = r.zones;
+  auto inZone = [&](const Box& box) {
+    return std::any_of(zones.begin(), zones.end(), [&](const Box& z) { return z.overlaps(box); });
+  };
+  std::unordered_map<Index, Index> local;
+  TriangleSurface all;
+  std::vector<char> appended(r.regions.size(), 0);
+  auto appendNearRegions = [&]() {
+    for (std::size_t k = 0; k < r.regions.size(); ++k)
+    {
+      if (!appended[k] && inZone(r.boxes[k]))
+      {
+        appended[k] = 1;
+        if (!appendRegion(c, cell, r, k, refined, local, all))
+        {
+          return false;
+        }
+      }
+    }
+    return true;
+  };
+  if (!appendNearRegions())
+  {
+    return false;
+  }
+  for (std::size_t i = 0; i < c.triangles.size(); ++i)
+  {
+    const Triangle& t = c.triangles[i];
+    if (c.trianglePairs[i][0] == cell && c.trianglePairs[i][1] == -1)
+    {
+      Triangle ids{};
+      for (int j = 0; j < 3; ++j)
+      {
+        ids[j] = local.emplace(t[j], static_cast<Index>(all.points.size())).first->second;
+        if (ids[j] == static_cast<Index>(all.points.size()))
+        {
+          all.points.push_back(c.points[t[j]]);
+        }
+      }
+      all.triangles.push_back(ids);
+    }
+  }
+  std::unordered_map<Index, std::size_t> zoneAt;
+  for (std::size_t z = 0; z < zones.size(); ++z)
+  {
+    const auto it = local.find(r.zonePoints[z]);
+    if (it != local.end())
+    {
+      zoneAt.emplace(it->second, z);
+    }
+  }
+  growZones(all, zoneAt, zones);
+  if (!appendNearRegions())
+  {
+    return false;
+  }
+  InterfaceTriangulationOptions cover;
+  cover.minimumAngleDegrees = 1.0;
+  cover.maximumEdgeLength = std::numeric_limits<double>::max();
+  for (std::size_t k = 0; k < r.regions.size() && whole; ++k)
+  {
+    if (!appended[k] && !appendRegion(c, cell, r, k, cover, local, all))
+    {
+      return false;
+    }
+  }
+  selectNear(std::move(all), inZone, whole, part, near);
   return true;
 }
 
