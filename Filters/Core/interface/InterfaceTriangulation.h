@@ -52,9 +52,10 @@ struct InterfaceTriangulationOptions
   // (the input vertices inside a planar facet of the boundary refinement).
   bool keepIsolatedPoints = false;
   // A size field: the edge length wanted at a point in space (> 0). When
-  // set, it replaces the automatic sizing at every vertex as a hard bound,
-  // capped by maximumEdgeLength when that is set too. It must be
-  // deterministic, so that both sides of an interface get the same mesh.
+  // set, it replaces the automatic sizing at every vertex: edges up to 1.4 x
+  // the field are allowed, which puts them near it (InterfaceTriangulation.cpp,
+  // kFieldAllowance); maximumEdgeLength, when set too, stays a hard bound. It
+  // must be deterministic, so that both sides of an interface get the same mesh.
   SizeFunction sizeAt;
 };
 
