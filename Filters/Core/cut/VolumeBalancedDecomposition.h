@@ -5,13 +5,12 @@
 // (SurfaceComplex.h) with interface regions still as boundary loops.
 //
 // Strategies: ParallelPlanes (K-1 parallel planes, the paper's prepartition
-// along one direction) and RecursiveBisection (a new direction for each
-// part). Both cut a part meant for k subdomains at measure ratio
-// floor(k/2):ceil(k/2), and each plane cuts only its part. A plane's offset
-// comes from the part's measure function (HalfSpaceMeasure.h), corrected by
-// Newton steps on the real split until both parts are within the balance
-// tolerance. Subdomain numbering: depth-first, lower side first (along the
-// direction, for parallel planes).
+// along one direction) and RecursiveBisection (a part meant for k subdomains
+// is cut at measure ratio floor(k/2):ceil(k/2); each plane cuts only its
+// part). Plane offsets are found iteratively (regula falsi on the measure
+// below the plane) until every part is within the balance tolerance.
+// Subdomain numbering: along the direction for parallel planes; depth-first,
+// lower side first, for recursive bisection.
 #include "CutDirection.h"
 #include "HalfSpaceMeasure.h"
 #include "PlaneAlignment.h"
