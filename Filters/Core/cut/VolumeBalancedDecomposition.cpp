@@ -169,7 +169,7 @@ struct PartRegions
   std::vector<std::vector<Index>> points;
   std::vector<Box> boxes;
   std::vector<Box> zones;
-  std::vector<Index> zonePoints; // the point of each zone
+  std::vector<Index> zonePoints; // the point of each zone (-1: none)
 };
 
 PartRegions regionsOfPart(const SurfaceComplex& c, int cell, const Box& cutBox, int below, int above)
@@ -418,7 +418,8 @@ bool partSurface(const SurfaceComplex& c, int cell, const PartRegions& r, bool w
 // Whether the surface of part `cell` crosses itself where a cut of `below`
 // and `above` changed it (within `cutBox`, the box of the new interface),
 // checked with CGAL's exact predicates: the faces reaching into the zones
-// of regionsOfPart. Farther faces are as they were, already checked (with
+// of regionsOfPart, and for the two new parts into the cut's box. Farther
+// faces are as they were, already checked (with
 // the input or the parent part). Only the near faces are handed to CGAL
 // when they form a polygon mesh by themselves: building the whole part for
 // every check made the cutter's time grow with K (a ball of 23,592
@@ -427,10 +428,19 @@ bool partSurface(const SurfaceComplex& c, int cell, const PartRegions& r, bool w
 // counts as crossing.
 bool partCrossesItself(const SurfaceComplex& c, int cell, const Box& cutBox, int below, int above)
 {
-  const PartRegions r = regionsOfPart(c, cell, cutBox, below, above);
+  PartRegions r = regionsOfPart(c, cell, cutBox, below, above);
   if (r.zones.empty())
   {
     return false;
+  }
+  if (cell == below || cell == above)
+  {
+    // the new interface's box too: without it the check let through cuts
+    // the whole-part check had refused, and CGAL's spool at K = 64 with
+    // parallel planes then had a subdomain crossing itself (OpenSCAD's
+    // example005 one TetGen could not mesh); with it both mesh as before
+    r.zones.push_back(cutBox);
+    r.zonePoints.push_back(-1);
   }
   TriangleSurface patch;
   std::vector<Index> near;
