@@ -330,7 +330,7 @@ void growZones(const TriangleSurface& surface, const std::unordered_map<Index, s
 // surface triangles and the regions reaching into a zone as the
 // triangulator refines them, unsmoothed (smoothing took a third of the
 // cutter's time: ball of 41,000 triangles, K = 16, 10.5 s). Refined to the
-// minimum angle alone, without the size bound, the check was 2.7 x faster
+// minimum angle alone, without the size bound, the cutter was 2.6 x faster
 // (parallel planes, a ball of 23,592 triangles at K = 64) but judged cuts
 // of OCCT's Bottom differently, and the run at K = 32 with parallel planes
 // then failed in TetGen. The zones are grown by the region triangles at
@@ -419,13 +419,12 @@ bool partSurface(const SurfaceComplex& c, int cell, const PartRegions& r, bool w
 // and `above` changed it (within `cutBox`, the box of the new interface),
 // checked with CGAL's exact predicates: the faces reaching into the zones
 // of regionsOfPart, and for the two new parts into the cut's box. Farther
-// faces are as they were, already checked (with
-// the input or the parent part). Only the near faces are handed to CGAL
-// when they form a polygon mesh by themselves: building the whole part for
-// every check made the cutter's time grow with K (a ball of 23,592
-// triangles, K = 64, recursive bisection: 62 % of 8.6 s; the neighbours of
-// a part cut early are whole halves). A region that cannot be triangulated
-// counts as crossing.
+// faces are as they were, already checked (with the input or the parent
+// part). Only the near faces are handed to CGAL when they form a polygon
+// mesh by themselves: building the whole part for every check made the
+// cutter's time grow with K (a ball of 23,592 triangles, K = 64, recursive
+// bisection: 62 % of 8.6 s; the neighbours of a part cut early are whole
+// halves). A region that cannot be triangulated counts as crossing.
 bool partCrossesItself(const SurfaceComplex& c, int cell, const Box& cutBox, int below, int above)
 {
   PartRegions r = regionsOfPart(c, cell, cutBox, below, above);
