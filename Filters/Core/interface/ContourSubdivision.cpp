@@ -8,11 +8,6 @@ namespace ptm
 {
 namespace
 {
-double localSize(const ContourSubdivisionOptions& options, const Vec3& p)
-{
-  return cappedSizeAt(options.sizeAt, options.size, p);
-}
-
 // The points that split from-to into `parts` equal parts.
 std::vector<Vec3> pointsInParts(const Vec3& from, const Vec3& to, int parts)
 {
@@ -32,7 +27,7 @@ int wantedParts(const SurfaceComplex& c, Index a, Index b, const std::vector<Ind
   const ContourSubdivisionOptions& options)
 {
   const Vec3 &pa = c.points[a], &pb = c.points[b];
-  const double local = localSize(options, pa + 0.5 * (pb - pa));
+  const double local = cappedSizeAt(options.sizeAt, options.size, pa + 0.5 * (pb - pa));
   double spacing = local;
   const double bound = options.minimumAngleDegrees * kPi / 180.0;
   for (Index x : across)
