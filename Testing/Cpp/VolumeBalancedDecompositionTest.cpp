@@ -492,6 +492,24 @@ TEST(PlaneClearance, AwayFromPointsOrThroughThem)
   EXPECT_NEAR(clearance.clearestOffset(0.3, 0.45, 0.31, 0.2), 0.31, 1e-12);
 }
 
+namespace
+{
+// A complex of one part (label 0) bounded by `surface`, with one plane of
+// normal n on record, ready for splitCell.
+SurfaceComplex onePart(const TriangleSurface& surface, const Vec3& n)
+{
+  SurfaceComplex c;
+  c.points = surface.points;
+  c.triangles = surface.triangles;
+  c.trianglePairs.assign(c.triangles.size(), SubdomainPair{ 0, -1 });
+  c.sourceFaces.assign(c.triangles.size(), -1);
+  CuttingPlane plane;
+  plane.normal = n;
+  c.planes.push_back(plane);
+  return c;
+}
+} // namespace
+
 // A vertex within the snap distance of the plane whose neighbours all lie
 // across it (here the lower apex of a diamond, 0.01 under z = 0, its four
 // neighbours at z = 0.5): snapped, it would take its four triangles above
@@ -499,19 +517,15 @@ TEST(PlaneClearance, AwayFromPointsOrThroughThem)
 // It keeps its side, and the plane cuts the small cap around it off.
 TEST(PlaneSplit, VertexWhoseNeighboursAllLieAcrossKeepsItsSide)
 {
-  SurfaceComplex c;
-  c.points = { { 0, 0, -0.01 }, { 1, 0, 0.5 }, { 0, 1, 0.5 }, { -1, 0, 0.5 }, { 0, -1, 0.5 }, { 0, 0, 1 } };
+  TriangleSurface diamond;
+  diamond.points = { { 0, 0, -0.01 }, { 1, 0, 0.5 }, { 0, 1, 0.5 }, { -1, 0, 0.5 }, { 0, -1, 0.5 }, { 0, 0, 1 } };
   for (Index k = 0; k < 4; ++k)
   {
     const Index a = 1 + k, b = 1 + (k + 1) % 4;
-    c.triangles.push_back({ 0, b, a }); // outward: the lower apex's fan faces down
-    c.triangles.push_back({ 5, a, b });
+    diamond.triangles.push_back({ 0, b, a }); // outward: the lower apex's fan faces down
+    diamond.triangles.push_back({ 5, a, b });
   }
-  c.trianglePairs.assign(c.triangles.size(), SubdomainPair{ 0, -1 });
-  c.sourceFaces.assign(c.triangles.size(), -1);
-  CuttingPlane plane;
-  plane.normal = { 0, 0, 1 };
-  c.planes.push_back(plane);
+  SurfaceComplex c = onePart(diamond, { 0, 0, 1 });
   PlaneSplitStats stats;
   std::string error;
   ASSERT_TRUE(splitCell(c, 0, { 0, 0, 1 }, 0.0, 0, 1, 2, {}, stats, error)) << error;
@@ -525,4 +539,73 @@ TEST(PlaneSplit, VertexWhoseNeighboursAllLieAcrossKeepsItsSide)
   EXPECT_EQ(below, 4u); // the cap: the lower apex's four triangles, cut near it
   ASSERT_EQ(c.interfaces.size(), 1u);
   EXPECT_EQ(c.interfaces[0].edges.size(), 4u);
+}
+
+// A prism along x whose cross-section (z, y) is a square with a notch from
+// below: its walls rise from y = 0 to a reflex edge at y = 0.5. The plane
+// y = 0.5 runs exactly along that edge, with both walls under it: the new
+// interface would pass over the edge and the part below would touch itself
+// along it (OpenSCAD's example024 at K = 16, parallel planes, left a
+// subdomain that TetGen refused so). The split reports the edge's ends as
+// pinched, exactly on the plane, so the caller moves the plane off them.
+TEST(PlaneSplit, PlaneAlongTheBottomOfANotchIsAPinch)
+{
+  const std::vector<std::array<double, 2>> section = { { -1, 0 }, { -0.3, 0 }, { 0, 0.5 }, { 0.3, 0 }, { 1, 0 },
+    { 1, 1 }, { -1, 1 } }; // (z, y), counter-clockwise
+  const Index m = static_cast<Index>(section.size());
+  TriangleSurface prism;
+  for (double x : { 0.0, 1.0 })
+  {
+    for (const auto& [z, y] : section)
+    {
+      prism.points.push_back({ x, y, z });
+    }
+  }
+  for (Index i = 0; i < m; ++i)
+  {
+    const Index j = (i + 1) % m;
+    prism.triangles.push_back({ i, j, m + j });
+    prism.triangles.push_back({ i, m + j, m + i });
+  }
+  for (const Triangle& t : std::vector<Triangle>{ { 0, 1, 6 }, { 1, 2, 6 }, { 2, 5, 6 }, { 2, 3, 5 }, { 3, 4, 5 } })
+  {
+    prism.triangles.push_back({ t[0], t[2], t[1] });
+    prism.triangles.push_back({ m + t[0], m + t[1], m + t[2] });
+  }
+  if (signedVolume(prism) < 0)
+  {
+    prism = flipped(prism);
+  }
+  ASSERT_EQ(badDirectedEdges(prism.triangles), 0u);
+  SurfaceComplex c = onePart(prism, { 0, 1, 0 });
+  PlaneSplitStats stats;
+  std::string error;
+  EXPECT_FALSE(splitCell(c, 0, { 0, 1, 0 }, 0.5, 0, 1, 2, {}, stats, error));
+  EXPECT_EQ(stats.pinchedPoints, (std::vector<Index>{ 2, m + 2 })) << error;
+  EXPECT_TRUE(stats.pinchedOnPlane);
+  EXPECT_NE(error.find("notch"), std::string::npos) << error;
+
+  // Just off the edge the cut is made, and a plane through the top face
+  // (its edges are not reflex) is no pinch either.
+  for (double offset : { 0.55, 1.0 })
+  {
+    SurfaceComplex copy = c;
+    PlaneSplitStats fine;
+    EXPECT_TRUE(splitCell(copy, 0, { 0, 1, 0 }, offset, 0, 1, 2, {}, fine, error)) << offset << ": " << error;
+  }
+}
+
+// Points a cut pinched at count for the clearance even exactly on the plane;
+// other points there do not lower it.
+TEST(PlaneClearance, PointsThatMustClearCountOnThePlane)
+{
+  SurfaceComplex c;
+  c.points = { { 0, 0, 0 }, { 0, 0, 1 }, { 0, 0, 2 } };
+  const std::vector<PointSpacing> spacing = { { 0, 1.0 }, { 1, 1.0 }, { 2, 1.0 } };
+  const PlaneClearance free(c, spacing, { 0, 0, 1 });
+  const PlaneClearance keepOff(c, spacing, { 0, 0, 1 }, { 1 });
+  EXPECT_DOUBLE_EQ(free.at(1.0), 1.0);
+  EXPECT_DOUBLE_EQ(keepOff.at(1.0), 0.0);
+  EXPECT_DOUBLE_EQ(keepOff.at(0.5), 0.5);
+  EXPECT_NE(keepOff.clearestOffset(0.6, 1.4, 1.0, 0.5), 1.0);
 }

@@ -1,4 +1,5 @@
 #include "HalfSpaceMeasure.h"
+#include "PlaneSplit.h"
 
 #include <algorithm>
 #include <cmath>
@@ -79,50 +80,49 @@ PlaneClearance::PlaneClearance(const SurfaceComplex& c, int cell, const Vec3& no
 {
 }
 
-PlaneClearance::PlaneClearance(const SurfaceComplex& c, const std::vector<PointSpacing>& spacing, const Vec3& normal)
+PlaneClearance::PlaneClearance(const SurfaceComplex& c, const std::vector<PointSpacing>& spacing, const Vec3& normal,
+  const std::vector<Index>& mustClear)
 {
   this->Points.reserve(spacing.size());
   for (const PointSpacing& s : spacing)
   {
-    this->Points.emplace_back(dot(normal, c.points[s.point]), s.shortest);
+    const bool clear = std::binary_search(mustClear.begin(), mustClear.end(), s.point);
+    this->Points.push_back({ dot(normal, c.points[s.point]), s.shortest, clear });
     this->LargestEdge = std::max(this->LargestEdge, s.shortest);
   }
   std::sort(this->Points.begin(), this->Points.end());
 }
-
-namespace
-{
-// A point this close to the plane (relative to its edges) lies on it up to
-// round-off: the contour runs through it, as through the grid points of a
-// box cut on its grid lines, which leaves no short segment at all.
-constexpr double kOnPlane = 1e-9;
-} // namespace
 
 double PlaneClearance::at(double offset) const
 {
   // only points within (best so far) x (largest edge) can lower the minimum:
   // walk outward from the offset in both directions
   double best = std::numeric_limits<double>::infinity();
-  const auto start = std::lower_bound(this->Points.begin(), this->Points.end(),
-    std::make_pair(offset, -std::numeric_limits<double>::infinity()));
+  auto score = [&](const Projected& p, double d) {
+    if (d > kOnPlaneFraction * p.spacing || p.mustClear)
+    {
+      best = std::min(best, d / p.spacing);
+    }
+  };
+  const auto start = std::lower_bound(this->Points.begin(), this->Points.end(), Projected{ offset, 0.0, false });
   for (auto it = start; it != this->Points.end(); ++it)
   {
-    const double d = it->first - offset;
+    const double d = it->at - offset;
     if (d >= best * this->LargestEdge)
     {
       break;
     }
-    best = d <= kOnPlane * it->second ? best : std::min(best, d / it->second);
+    score(*it, d);
   }
   for (auto it = start; it != this->Points.begin();)
   {
     --it;
-    const double d = offset - it->first;
+    const double d = offset - it->at;
     if (d >= best * this->LargestEdge)
     {
       break;
     }
-    best = d <= kOnPlane * it->second ? best : std::min(best, d / it->second);
+    score(*it, d);
   }
   return best;
 }
@@ -134,16 +134,16 @@ double PlaneClearance::clearestOffset(double low, double high, double preferred,
   // point meets the falling cone of a point above it, so those are the
   // candidates (neighbours in projection order, enough in practice)
   std::vector<double> candidates{ low, high, std::clamp(preferred, low, high) };
-  const auto first = std::lower_bound(this->Points.begin(), this->Points.end(),
-    std::make_pair(low - this->LargestEdge, -std::numeric_limits<double>::infinity()));
+  const auto first =
+    std::lower_bound(this->Points.begin(), this->Points.end(), Projected{ low - this->LargestEdge, 0.0, false });
   for (auto it = first; it != this->Points.end() && std::next(it) != this->Points.end(); ++it)
   {
-    if (it->first > high + this->LargestEdge)
+    if (it->at > high + this->LargestEdge)
     {
       break;
     }
-    const auto& [pa, ha] = *it;
-    const auto& [pb, hb] = *std::next(it);
+    const double pa = it->at, ha = it->spacing;
+    const double pb = std::next(it)->at, hb = std::next(it)->spacing;
     const double meet = (pa * hb + pb * ha) / (ha + hb);
     if (meet > low && meet < high)
     {

@@ -65,11 +65,11 @@ private:
 // How far the plane n.x = offset keeps from the points of part `cell`: the
 // smallest |n.p - offset| / h(p) over its points p, h(p) the shortest edge of
 // the part at p (surface triangle edges and interface boundary edges), over
-// the points not on the plane (within round-off, 1e-9 h(p)): a plane a
-// hair off a point scores about 0; one a tenth of the edges away, 0.1. The
-// contour of a plane at clearance s crosses the edges at p at least s h(p)
-// from p, so it has no segment much shorter than s times the local edge
-// (long thin triangles crossed near their sharp corner aside).
+// the points not on the plane (within round-off, kOnPlaneFraction h(p)): a
+// plane a hair off a point scores about 0; one a tenth of the edges away,
+// 0.1. The contour of a plane at clearance s crosses the edges at p at
+// least s h(p) from p, so it has no segment much shorter than s times the
+// local edge (long thin triangles crossed near their sharp corner aside).
 struct PointSpacing
 {
   Index point;
@@ -86,14 +86,25 @@ public:
   PlaneClearance(const SurfaceComplex& complex, int cell, const Vec3& normal);
   // The same from the part's shortestEdges, found once for every normal
   // tried (finding them for each took 6 % of a K = 64 run on one rank).
-  PlaneClearance(const SurfaceComplex& complex, const std::vector<PointSpacing>& spacing, const Vec3& normal);
+  // Points in `mustClear` (sorted) count even where they lie on the plane:
+  // a cut through them pinched the part (the bottom of a notch), so the
+  // plane must keep off them.
+  PlaneClearance(const SurfaceComplex& complex, const std::vector<PointSpacing>& spacing, const Vec3& normal,
+    const std::vector<Index>& mustClear = {});
   double at(double offset) const;
   // The offset in [low, high] of largest clearance, clearances above `enough`
   // counting as `enough`; of equal ones the nearest to `preferred`.
   double clearestOffset(double low, double high, double preferred, double enough) const;
 
 private:
-  std::vector<std::pair<double, double>> Points; // (n.p, h(p)), sorted
+  struct Projected
+  {
+    double at;      // n.p
+    double spacing; // h(p)
+    bool mustClear; // no exemption on the plane
+    bool operator<(const Projected& o) const { return at < o.at; }
+  };
+  std::vector<Projected> Points; // sorted by n.p
   double LargestEdge = 0;
 };
 

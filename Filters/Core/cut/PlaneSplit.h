@@ -32,6 +32,12 @@
 
 namespace ptm
 {
+// A point within this fraction of its shortest edge of a plane lies on it up
+// to round-off (4e-16 to 2e-14 seen where cuts run through earlier lines):
+// the contour runs through it, as through the grid points of a box cut on
+// its grid lines, which leaves no short segment at all.
+constexpr double kOnPlaneFraction = 1e-9;
+
 struct PlaneSplitOptions
 {
   // 0.05: measured on the test surfaces (60 decompositions incl. the CAD
@@ -65,6 +71,7 @@ struct PlaneSplitStats
   // cross at the vertex. The split fails with these points listed.
   std::vector<Index> pinchedPoints;
   bool pinchedOnPlane = false; // one of them lies exactly on the plane (not snapped)
+  bool pinchedAtNotch = false;  // they are the ends of edges at the bottom of a notch (notchInPlane)
 };
 
 // Returns false with a message if the part's faces do not form a closed

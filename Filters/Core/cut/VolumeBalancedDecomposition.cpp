@@ -472,6 +472,7 @@ struct Trial
   PlaneSplitStats stats;
   double missing = 0, area = 0;
   double offset = 0; // of the split actually made (a pinch may move it a hair)
+  std::vector<Index> notchPoints; // ends of notch bottoms a trial plane ran along (sorted)
   Vec3 normal{ 0, 0, 0 };
   double error = std::numeric_limits<double>::infinity();
 };
@@ -550,15 +551,20 @@ PartCut::PartCut(SurfaceComplex& complex, const DecompositionOptions& options_,
 // A split that pinches a part (PlaneSplitStats::pinchedPoints) is tried
 // again without snapping the pinching vertices; one pinched at a vertex
 // exactly on the plane is tried again a hair off it (a thousandth of the
-// mean edge; the balance loops correct the offset and the clearance
-// search below moves it further). Never shipped pinched: on the triple
-// torus (19 vertices) such cuts made 1 to 2 of K subdomains self-
-// intersecting at K = 4, 6, 8, 9, 10, 11, 12, 16, 20, 24, 32, 48, 64.
+// mean edge). The balance loops correct the offset, and the clearance
+// search below moves it further, off the bottom of a notch the plane ran
+// along too: Trial::notchPoints count for it even on the plane. (Counting
+// the points of every pinch so, OCCT's Bottom at K = 16 with recursive
+// bisection had other cuts, and TetGen crashed on one subdomain.) Never
+// shipped pinched: on the triple torus (19 vertices) such cuts made 1 to 2
+// of K subdomains self-intersecting at K = 4, 6, 8, 9, 10, 11, 12, 16, 20,
+// 24, 32, 48, 64.
 Trial PartCut::tryCut(const Vec3& n, double at, double snap)
 {
   Trial trial;
   PlaneSplitOptions splitOptions;
   splitOptions.snapFraction = snap;
+  std::vector<Index> notches;
   for (int attempt = 0; attempt < 8; ++attempt)
   {
     trial.complex = c;
@@ -588,11 +594,18 @@ Trial PartCut::tryCut(const Vec3& n, double at, double snap)
     keep.insert(keep.end(), trial.stats.pinchedPoints.begin(), trial.stats.pinchedPoints.end());
     std::sort(keep.begin(), keep.end());
     keep.erase(std::unique(keep.begin(), keep.end()), keep.end());
+    if (trial.stats.pinchedAtNotch)
+    {
+      notches.insert(notches.end(), trial.stats.pinchedPoints.begin(), trial.stats.pinchedPoints.end());
+    }
   }
   if (!trial.ok)
   {
     return trial;
   }
+  std::sort(notches.begin(), notches.end());
+  notches.erase(std::unique(notches.begin(), notches.end()), notches.end());
+  trial.notchPoints = std::move(notches);
   trial.missing = volumeCriterion ? labelVolume(trial.complex, below) - target : 0.0;
   trial.error = std::fabs(trial.missing);
   trial.area = trial.stats.interfaceEdges == 0
@@ -614,13 +627,18 @@ Trial PartCut::tryCut(const Vec3& n, double at, double snap)
 // error of each slab is passed on to the rest, and the last slabs add up
 // 1/(K-1) + 1/(K-2) + ... of them, about ln K; at 0.8 of the allowed error
 // alone, the triple torus by 64 parallel planes reached an imbalance of
-// 0.0081 against the tolerance of 0.01.
+// 0.0081 against the tolerance of 0.01. Points exactly on the plane do not
+// lower the clearance (a plane through a face is a clean cut), except the
+// ends of a notch bottom a trial ran along: OpenSCAD's example024 at K = 16
+// (parallel planes) had its plane put back a thousandth of an edge off the
+// bottom of a notch, and TetGen crashed on the sliver layer left between
+// notch and interface.
 Trial PartCut::clearestBalancedCut(const Vec3& n, Trial&& balanced, double& at)
 {
   const double budget = clearanceBudget();
   const double low = at + std::min(0.0, (-budget - balanced.missing) / balanced.area);
   const double high = at + std::max(0.0, (budget - balanced.missing) / balanced.area);
-  const PlaneClearance clearance(c, spacing, n);
+  const PlaneClearance clearance(c, spacing, n, balanced.notchPoints);
   const double clearest = clearance.clearestOffset(low, high, at, kEnoughClearance);
   if (clearest == at || !(clearance.at(clearest) > clearance.at(at)))
   {
