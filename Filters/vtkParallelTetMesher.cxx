@@ -119,11 +119,6 @@ struct MeshedSubdomain
   double volumeChange = 0, deviation = 0;
 };
 
-// Refines `surface` (unless `refinement` is null) and meshes it. Where
-// TetGen fails on the refined surface, the surface as it came is meshed
-// instead, with a warning: a subdomain TetGen can mesh must not fail because
-// of the refinement (measured on CAD parts where TetGen stalls on some
-// refined surfaces).
 // TetGen's edges come out about 1.3 x the -m size at the points (icosphere
 // of edge 0.04, field 0.03-0.3: median edge 1.28 x the field, 69 % within
 // 1.5 x; at 0.8 x: 1.07, 93 %; at 0.7 x: 0.95, 97 %), so it gets 0.75 x
@@ -149,9 +144,54 @@ ptm::TetMeshingResult meshWithSizes(const ptm::SubdomainSurface& surface, ptm::T
       h *= kTetGenSizeScale;
     }
   }
+  options.splittableTriangles.resize(surface.otherSide.size());
+  std::transform(surface.otherSide.begin(), surface.otherSide.end(), options.splittableTriangles.begin(),
+    [](int other) { return other < 0 ? 1 : 0; });
   return ptm::meshClosedSurface(surface.surface, options);
 }
 
+// Where TetGen split outer triangles of the subdomain (TetMeshingResult::
+// splitTriangles), `surface` takes the faces that replace them, so the
+// boundary output matches the tetrahedra; their new points are the mesh's,
+// private to the subdomain like its interior points.
+void takeSplitFaces(const ptm::TetMeshingResult& r, ptm::SubdomainSurface& surface)
+{
+  if (r.splitTriangles.empty())
+  {
+    return;
+  }
+  std::vector<char> split(surface.surface.triangles.size(), 0);
+  for (ptm::Index t : r.splitTriangles)
+  {
+    split[t] = 1;
+  }
+  ptm::SubdomainSurface kept;
+  kept.globalIds = surface.globalIds;
+  kept.surface.points = r.mesh.points;
+  for (std::size_t t = 0; t < split.size(); ++t)
+  {
+    if (!split[t])
+    {
+      kept.surface.triangles.push_back(surface.surface.triangles[t]);
+      kept.sourceFaces.push_back(surface.sourceFaces[t]);
+      kept.otherSide.push_back(surface.otherSide[t]);
+    }
+  }
+  for (std::size_t f = 0; f < r.splitFaces.size(); ++f)
+  {
+    kept.surface.triangles.push_back(r.splitFaces[f]);
+    kept.sourceFaces.push_back(surface.sourceFaces[r.splitFaceParents[f]]);
+    kept.otherSide.push_back(-1);
+  }
+  surface = std::move(kept);
+}
+
+// Refines `surface` (unless `refinement` is null) and meshes it. Where
+// TetGen fails on the refined surface, the surface as it came is meshed
+// instead, with a warning: a subdomain TetGen can mesh must not fail because
+// of the refinement (measured on CAD parts where TetGen stalls on some
+// refined surfaces). `surface` ends as the boundary of the mesh: refined,
+// and with the outer triangles TetGen split replaced (takeSplitFaces).
 MeshedSubdomain meshSubdomain(ptm::SubdomainSurface& surface, const ptm::TetMeshingOptions& options,
   const ptm::SurfaceRefinementOptions* refinement, const ptm::SizeField& field)
 {
@@ -202,7 +242,19 @@ MeshedSubdomain meshSubdomain(ptm::SubdomainSurface& surface, const ptm::TetMesh
     m.error = r.error;
     return m;
   }
-  if (r.attempts > 1)
+  if (!r.splitTriangles.empty())
+  {
+    m.warnings.push_back("TetGen could not keep " + std::to_string(r.splitTriangles.size()) +
+      " triangles of the outer boundary and split them into " + std::to_string(r.splitFaces.size()) +
+      " (with points on them; the interfaces are kept, so the mesh still conforms)");
+    takeSplitFaces(r, surface);
+  }
+  if (r.recoveredThenRefined)
+  {
+    m.warnings.push_back("TetGen crashed or stalled meshing and refining in one run (in all three point "
+                         "orders); meshed in two runs: the surface recovered (-pY), then the mesh refined (-rY)");
+  }
+  else if (r.attempts > 1)
   {
     m.warnings.push_back("TetGen crashed or stalled with the points in their canonical order and meshed "
                          "them in another order (attempt " +

@@ -220,6 +220,102 @@ TEST(TetGenSubdomainMesher, StallInOnePointOrderIsStoppedAndRetriedInAnother)
   expectConformingMesh(file.data.surface, r, "stalled, then retried in another order");
 }
 
+TEST(TetGenSubdomainMesher, AbortWhenRefiningIsMeshedInTwoRuns)
+{
+  // TetGen 1.5 recovers this surface with -pY but aborts refining it in
+  // the same run in every point order; recovering first and refining that
+  // mesh in a second run (-rY) gives a refined mesh with the surface kept,
+  // also with a size field at the points (-m), and the same mesh every time
+  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/tetgen_abort_when_refining.off");
+  ASSERT_TRUE(file.ok) << file.error;
+  const TriangleSurface& surface = file.data.surface;
+  TetMeshingOptions options;
+  options.maximumVolume = 5.0097439922402185e-06;
+  options.minimumDihedralAngle = 10;
+  const TetMeshingResult a = meshClosedSurface(surface, options);
+  EXPECT_TRUE(a.recoveredThenRefined);
+  expectConformingMesh(surface, a, "recovered, then refined");
+  // -pY alone adds 1 point inside; the refinement adds tens
+  EXPECT_GT(a.mesh.points.size(), surface.points.size() + 10);
+  const TetMeshingResult b = meshClosedSurface(surface, options);
+  ASSERT_TRUE(b.ok) << b.error;
+  EXPECT_EQ(a.mesh.points, b.mesh.points);
+  EXPECT_EQ(a.mesh.tets, b.mesh.tets);
+
+  options.pointSizes.assign(surface.points.size(), 0.02);
+  const TetMeshingResult sized = meshClosedSurface(surface, options);
+  EXPECT_TRUE(sized.recoveredThenRefined);
+  expectConformingMesh(surface, sized, "recovered, then refined with a size field");
+}
+
+TEST(TetGenSubdomainMesher, SplittableTrianglesMayBeSplitOthersNot)
+{
+  // TetGen 1.5 -Y splits two coplanar triangles of this surface into four
+  // around a point on them (a defect: it should keep them)
+  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/tetgen_splits_a_facet.off");
+  ASSERT_TRUE(file.ok) << file.error;
+  const TriangleSurface& surface = file.data.surface;
+  TetMeshingOptions options;
+  options.maximumVolume = 433900;
+  options.minimumDihedralAngle = 10;
+
+  // kept exactly unless told otherwise: refused, naming the boundary
+  TetMeshingResult r = meshClosedSurface(surface, options);
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("boundary differs"), std::string::npos) << r.error;
+
+  // the split triangles splittable: accepted, the new faces on them, outward
+  options.splittableTriangles.assign(surface.triangles.size(), 1);
+  r = meshClosedSurface(surface, options);
+  ASSERT_TRUE(r.ok) << r.error;
+  ASSERT_EQ(r.splitTriangles, (std::vector<Index>{ 1497, 1506 }));
+  ASSERT_EQ(r.splitFaces.size(), 4u);
+  ASSERT_EQ(r.splitFaceParents.size(), 4u);
+  double splitArea = 0, faceArea = 0;
+  for (Index t : r.splitTriangles)
+  {
+    const Triangle& tri = surface.triangles[t];
+    splitArea += norm(cross(surface.points[tri[1]] - surface.points[tri[0]], surface.points[tri[2]] - surface.points[tri[0]]));
+  }
+  // the boundary of the mesh: the kept triangles and the new faces, which
+  // enclose the mesh's volume (so they face outward)
+  TriangleSurface boundary;
+  boundary.points = r.mesh.points;
+  for (std::size_t t = 0; t < surface.triangles.size(); ++t)
+  {
+    if (!std::binary_search(r.splitTriangles.begin(), r.splitTriangles.end(), static_cast<Index>(t)))
+    {
+      boundary.triangles.push_back(surface.triangles[t]);
+    }
+  }
+  for (std::size_t f = 0; f < r.splitFaces.size(); ++f)
+  {
+    const Triangle& face = r.splitFaces[f];
+    const Vec3 normal = cross(r.mesh.points[face[1]] - r.mesh.points[face[0]], r.mesh.points[face[2]] - r.mesh.points[face[0]]);
+    faceArea += norm(normal);
+    const Triangle& parent = surface.triangles[r.splitFaceParents[f]];
+    const Vec3 parentNormal =
+      cross(surface.points[parent[1]] - surface.points[parent[0]], surface.points[parent[2]] - surface.points[parent[0]]);
+    EXPECT_GT(dot(normal, parentNormal), 0) << "face " << f << " turned against the triangle it lies on";
+    boundary.triangles.push_back(face);
+  }
+  EXPECT_NEAR(faceArea / splitArea, 1.0, 1e-12);
+  double filled = 0;
+  for (const auto& t : r.mesh.tets)
+  {
+    filled += tetVolume(r.mesh, t);
+  }
+  EXPECT_NEAR(signedVolume(boundary) / filled, 1.0, 1e-12);
+  EXPECT_NEAR(signedVolume(surface) / filled, 1.0, 1e-12);
+
+  // one of them shared with a neighbour: refused again, saying so
+  options.splittableTriangles[1506] = 0;
+  r = meshClosedSurface(surface, options);
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("neighbouring subdomain shares"), std::string::npos) << r.error;
+  EXPECT_TRUE(r.splitTriangles.empty());
+}
+
 TEST(TetGenSubdomainMesher, FailuresAreReportedNotThrown)
 {
   // two overlapping boxes: the surface intersects itself

@@ -4,6 +4,8 @@
 
 #include <tetgen.h>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
 #include <csignal>
 #include <poll.h>
 #include <sys/resource.h>
@@ -19,7 +21,9 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <iterator>
 #include <map>
+#include <numeric>
 #include <new>
 #include <queue>
 #include <set>
@@ -437,6 +441,10 @@ std::string inputError(const TriangleSurface& s, const TetMeshingOptions& option
   {
     return "invalid options: the point sizes must be one positive, finite size per surface point";
   }
+  if (!options.splittableTriangles.empty() && options.splittableTriangles.size() != s.triangles.size())
+  {
+    return "invalid options: the splittable triangles must be marked one per surface triangle";
+  }
   if (!validExtraSwitches(options.extraSwitches))
   {
     return "extra TetGen switches '" + options.extraSwitches +
@@ -515,11 +523,13 @@ bool cavityHoles(const TriangleSurface& s, std::vector<Vec3>& holes)
   return true;
 }
 
-std::string tetgenSwitches(const TetMeshingOptions& options, double volume)
+// TetGen's switches: `mode` p meshes the surface (a PLC), r refines a mesh
+// given as tetrahedra (recoverThenRefine); Y keeps the surface either way.
+std::string tetgenSwitches(const TetMeshingOptions& options, double volume, char mode = 'p')
 {
   std::ostringstream switches;
   switches.precision(17);
-  switches << "pYzQ" << (options.pointSizes.empty() ? "" : "m");
+  switches << mode << "YzQ" << (options.pointSizes.empty() ? "" : "m");
   if (options.qualityRefinement)
   {
     switches << "q" << options.radiusEdgeRatio;
@@ -695,10 +705,143 @@ std::string surfacePointsError(const TriangleSurface& s, const std::vector<doubl
   return {};
 }
 
+// The input of the second run of recoverThenRefine: the first run's mesh
+// (surface points first, in the surface's order), the surface triangles as
+// the faces -Y keeps, and with a size field a size at every point: a point
+// the first run added inside gets the mean size of the surface points it
+// shares a tetrahedron with (the mean of all, if none).
+void fillRefinementInput(const TriangleSurface& s, const TetGenRuns& first, const std::vector<double>& sizes,
+  tetgenio& in)
+{
+  const std::size_t total = first.points.size() / 3, n = s.points.size();
+  in.firstnumber = 0;
+  in.numberofpoints = static_cast<int>(total);
+  in.pointlist = new REAL[first.points.size()];
+  std::copy(first.points.begin(), first.points.end(), in.pointlist);
+  in.numberofcorners = 4;
+  in.numberoftetrahedra = static_cast<int>(first.tets.size() / 4);
+  in.tetrahedronlist = new int[first.tets.size()];
+  std::copy(first.tets.begin(), first.tets.end(), in.tetrahedronlist);
+  in.numberoftrifaces = static_cast<int>(s.triangles.size());
+  in.trifacelist = new int[3 * s.triangles.size()];
+  for (std::size_t t = 0; t < s.triangles.size(); ++t)
+  {
+    std::copy(s.triangles[t].begin(), s.triangles[t].end(), &in.trifacelist[3 * t]);
+  }
+  // every triangle edge a segment too: with the faces alone, -rY gave the
+  // spool's subdomain 544 boundary faces, but not the 544 it was given
+  std::set<std::pair<Index, Index>> edges;
+  for (const auto& t : s.triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      edges.insert(std::minmax(t[k], t[(k + 1) % 3]));
+    }
+  }
+  in.numberofedges = static_cast<int>(edges.size());
+  in.edgelist = new int[2 * edges.size()];
+  int* e = in.edgelist;
+  for (const auto& edge : edges)
+  {
+    *e++ = static_cast<int>(edge.first);
+    *e++ = static_cast<int>(edge.second);
+  }
+  if (sizes.empty())
+  {
+    return;
+  }
+  std::vector<double> sum(total, 0.0), count(total, 0.0);
+  for (std::size_t t = 0; t + 3 < first.tets.size(); t += 4)
+  {
+    for (int a = 0; a < 4; ++a)
+    {
+      for (int b = 0; b < 4; ++b)
+      {
+        const std::size_t va = first.tets[t + a], vb = first.tets[t + b];
+        if (va >= n && vb < n)
+        {
+          sum[va] += sizes[vb];
+          count[va] += 1;
+        }
+      }
+    }
+  }
+  const double mean = std::accumulate(sizes.begin(), sizes.end(), 0.0) / static_cast<double>(n);
+  in.numberofpointmtrs = 1;
+  in.pointmtrlist = new REAL[total];
+  for (std::size_t i = 0; i < total; ++i)
+  {
+    in.pointmtrlist[i] = i < n ? sizes[i] : (count[i] > 0 ? sum[i] / count[i] : mean);
+  }
+}
+
+// TetGen 1.5 can recover a surface (-pY) that it then fails to refine in
+// the same run: CGAL's spool from the corpus at K = 64 (recursive
+// bisection), subdomain 16 of 274 points, aborts in locate()
+// (searchtet->ver != 4) with -q or -a in all three point orders, while -pY
+// alone meshes it (adding one point inside), and a second run refining that
+// mesh (-rY with the same -q, -a, -m) gives 1,135 tetrahedra with the
+// surface kept. So a crash or stall of the one-run mesh is retried so: the
+// surface recovered first, then refined. Both runs are deterministic, so the
+// mesh is still the same on any rank.
+TetGenRuns recoverThenRefine(const TriangleSurface& s, const TetMeshingOptions& options,
+  const std::vector<Vec3>& holes, double volume, const TimeLimits& limits)
+{
+  TetMeshingOptions recoverOnly;
+  recoverOnly.qualityRefinement = false;
+  recoverOnly.extraSwitches = options.extraSwitches;
+  std::string switches = "pYzQ" + options.extraSwitches;
+  TetGenRuns first = runTetGen(s, recoverOnly, holes, switches, limits);
+  if (!first.failure.empty() || first.status != 0)
+  {
+    return first;
+  }
+  if (first.attempts > 1)
+  {
+    restoreSurfaceOrder(first, s.points.size());
+  }
+  TetGenRuns second;
+  second.failure = surfacePointsError(s, first.points);
+  if (!second.failure.empty())
+  {
+    return second;
+  }
+  tetgenio in;
+  fillRefinementInput(s, first, options.pointSizes, in);
+  second.order.resize(s.points.size());
+  std::iota(second.order.begin(), second.order.end(), Index{ 0 });
+  second.attempts = 1;
+  bool timedOut = false;
+  runTetGenIsolated(in, tetgenSwitches(options, volume, 'r'), limits.cpu, limits.wall, second.points,
+    second.tets, second.status, second.code, timedOut, second.failure);
+  return second;
+}
+
+// The orientation of every tetrahedron by CGAL's exact predicate (1, -1, 0
+// for flat). A float determinant misjudges nearly flat tetrahedra: OCCT's
+// Top at K = 32 (parallel planes), subdomain 11, had one of exact volume
+// -2.7e-16 whose float volume came out +8.1e-16, and turning the
+// tetrahedra by the float sign folded the mesh (two faces with both
+// tetrahedra on one side, found by the corpus sweep's independent check).
+std::vector<signed char> exactOrientations(const std::vector<double>& outPoints, const std::vector<int>& outTets)
+{
+  using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+  auto point = [&](int v) { return Point(outPoints[3 * v], outPoints[3 * v + 1], outPoints[3 * v + 2]); };
+  std::vector<signed char> sign(outTets.size() / 4);
+  for (std::size_t t = 0; t < sign.size(); ++t)
+  {
+    const int* v = &outTets[4 * t];
+    sign[t] = static_cast<signed char>(CGAL::orientation(point(v[0]), point(v[1]), point(v[2]), point(v[3])));
+  }
+  return sign;
+}
+
 // The mesh of TetGen's output, every tetrahedron positively oriented; returns
-// the faces of all tetrahedra, each with its corners sorted.
+// the faces of all tetrahedra, each with its corners sorted. TetGen gives
+// all its tetrahedra one orientation, so one of the other orientation (or
+// flat) is a defect of the mesh: `error` says so.
 std::vector<std::array<Index, 3>> convertMesh(
-  const std::vector<double>& outPoints, const std::vector<int>& outTets, TetMesh& mesh)
+  const std::vector<double>& outPoints, const std::vector<int>& outTets, TetMesh& mesh, std::string& error)
 {
   const int outPointCount = static_cast<int>(outPoints.size() / 3);
   const int outTetCount = static_cast<int>(outTets.size() / 4);
@@ -706,6 +849,15 @@ std::vector<std::array<Index, 3>> convertMesh(
   for (int i = 0; i < outPointCount; ++i)
   {
     mesh.points[i] = { outPoints[3 * i], outPoints[3 * i + 1], outPoints[3 * i + 2] };
+  }
+  const std::vector<signed char> sign = exactOrientations(outPoints, outTets);
+  const auto positive = std::count(sign.begin(), sign.end(), 1);
+  const signed char majority = 2 * positive >= outTetCount ? 1 : -1;
+  const auto wrong = outTetCount - std::count(sign.begin(), sign.end(), majority);
+  if (wrong > 0)
+  {
+    error = "TetGen's mesh has " + std::to_string(wrong) +
+      " tetrahedra turned against the others or flat (it folds over itself; a defect of libtet 1.5 on this surface)";
   }
   mesh.tets.resize(static_cast<std::size_t>(outTetCount));
   std::vector<std::array<Index, 3>> faces;
@@ -717,8 +869,7 @@ std::vector<std::array<Index, 3>> convertMesh(
     {
       v[k] = outTets[4 * t + k];
     }
-    const Vec3& a = mesh.points[v[0]];
-    if (dot(mesh.points[v[1]] - a, cross(mesh.points[v[2]] - a, mesh.points[v[3]] - a)) < 0)
+    if (majority < 0)
     {
       std::swap(v[2], v[3]);
     }
@@ -734,11 +885,23 @@ std::vector<std::array<Index, 3>> convertMesh(
   return faces;
 }
 
-// Faces used by one tetrahedron only must be exactly the input triangles.
-std::string boundaryError(const TriangleSurface& s, std::vector<std::array<Index, 3>>& faces)
+Triangle sortedKey(const Triangle& t)
+{
+  Triangle key = t;
+  std::sort(key.begin(), key.end());
+  return key;
+}
+
+bool contains(const std::vector<Triangle>& sorted, const Triangle& key)
+{
+  return std::binary_search(sorted.begin(), sorted.end(), key);
+}
+
+// The faces used by one tetrahedron only, corners sorted, in sorted order.
+std::vector<Triangle> boundaryFaces(std::vector<Triangle>& faces)
 {
   std::sort(faces.begin(), faces.end());
-  std::vector<std::array<Index, 3>> boundary;
+  std::vector<Triangle> boundary;
   for (std::size_t i = 0; i < faces.size();)
   {
     std::size_t j = i + 1;
@@ -752,27 +915,159 @@ std::string boundaryError(const TriangleSurface& s, std::vector<std::array<Index
     }
     i = j;
   }
-  std::vector<std::array<Index, 3>> input;
+  return boundary;
+}
+
+// The faces of the tetrahedra whose sorted corners are in `keys`, turned
+// outward (the tetrahedra are positively oriented).
+std::vector<Triangle> outwardFaces(const TetMesh& mesh, const std::vector<Triangle>& keys)
+{
+  std::vector<Triangle> faces;
+  for (const auto& t : mesh.tets)
+  {
+    const Triangle outward[4] = { { t[1], t[2], t[3] }, { t[0], t[3], t[2] }, { t[0], t[1], t[3] },
+      { t[0], t[2], t[1] } };
+    for (const Triangle& f : outward)
+    {
+      if (contains(keys, sortedKey(f)))
+      {
+        faces.push_back(f);
+      }
+    }
+  }
+  return faces;
+}
+
+// Whether p lies on triangle t of `s` up to `tolerance` (distance from its
+// plane) and a relative 1e-9 of its barycentric coordinates.
+bool liesOn(const TriangleSurface& s, const Triangle& t, const Vec3& p, double tolerance)
+{
+  const Vec3 &a = s.points[t[0]], &b = s.points[t[1]], &c = s.points[t[2]];
+  const Vec3 n = cross(b - a, c - a);
+  const double twiceArea = norm(n);
+  if (!(std::fabs(dot(p - a, n)) <= tolerance * twiceArea))
+  {
+    return false;
+  }
+  const double u = dot(cross(c - b, p - b), n), v = dot(cross(a - c, p - c), n), w = dot(cross(b - a, p - a), n);
+  const double slack = -1e-9 * twiceArea * twiceArea;
+  return u >= slack && v >= slack && w >= slack;
+}
+
+// TetGen 1.5 with -Y still splits a facet where it cannot recover it
+// otherwise: OCCT's Top at K = 32 (parallel planes), subdomain 19, had two
+// coplanar outer triangles replaced by four around a point it put on them
+// (3,580 boundary faces for 3,578). On a subdomain's outer boundary, which
+// no neighbour shares, that keeps the mesh conforming and the point on the
+// input surface, so it is accepted where every split triangle is one of
+// `splittable`, every new face lies on a split triangle (its corners within
+// 1e-12 of the surface's bounding-box diagonal of its plane) and the new
+// faces have the split triangles' area; `why` says what failed otherwise.
+bool acceptSplitFaces(const TriangleSurface& s, const std::vector<char>& splittable,
+  const std::vector<Triangle>& boundary, TetMeshingResult& r, std::string& why)
+{
+  std::vector<Triangle> input;
   for (const auto& t : s.triangles)
   {
-    std::array<Index, 3> key{ t[0], t[1], t[2] };
-    std::sort(key.begin(), key.end());
-    input.push_back(key);
+    input.push_back(sortedKey(t));
+  }
+  std::vector<Triangle> sortedInput(input);
+  std::sort(sortedInput.begin(), sortedInput.end());
+  double missingArea = 0, newArea = 0;
+  for (std::size_t t = 0; t < input.size(); ++t)
+  {
+    if (contains(boundary, input[t]))
+    {
+      continue;
+    }
+    if (!splittable[t])
+    {
+      why = "; it split a triangle a neighbouring subdomain shares";
+      return false;
+    }
+    r.splitTriangles.push_back(static_cast<Index>(t));
+    const Triangle& tri = s.triangles[t];
+    missingArea += norm(cross(s.points[tri[1]] - s.points[tri[0]], s.points[tri[2]] - s.points[tri[0]]));
+  }
+  std::vector<Triangle> added;
+  std::copy_if(boundary.begin(), boundary.end(), std::back_inserter(added),
+    [&](const Triangle& f) { return !contains(sortedInput, f); });
+  Vec3 low = s.points[0], high = s.points[0];
+  for (const Vec3& p : s.points)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      low[k] = std::min(low[k], p[k]);
+      high[k] = std::max(high[k], p[k]);
+    }
+  }
+  const double tolerance = 1e-12 * norm(high - low);
+  for (const Triangle& f : outwardFaces(r.mesh, added))
+  {
+    const Vec3 &a = r.mesh.points[f[0]], &b = r.mesh.points[f[1]], &c = r.mesh.points[f[2]];
+    const Vec3 centroid = (1.0 / 3.0) * (a + b + c);
+    Index parent = -1;
+    for (Index t : r.splitTriangles)
+    {
+      const Triangle& tri = s.triangles[t];
+      if (liesOn(s, tri, centroid, tolerance) && liesOn(s, tri, a, tolerance) && liesOn(s, tri, b, tolerance) &&
+        liesOn(s, tri, c, tolerance))
+      {
+        parent = t;
+        break;
+      }
+    }
+    if (parent < 0)
+    {
+      why = "; a face it made lies on none of the triangles it split";
+      return false;
+    }
+    r.splitFaces.push_back(f);
+    r.splitFaceParents.push_back(parent);
+    newArea += norm(cross(b - a, c - a));
+  }
+  if (!(std::fabs(newArea - missingArea) <= 1e-9 * missingArea))
+  {
+    why = "; the faces it made do not cover the triangles it split";
+    return false;
+  }
+  return true;
+}
+
+// The faces used by one tetrahedron only must be the input triangles, or
+// (acceptSplitFaces) splittable ones split by TetGen.
+std::string boundaryError(const TriangleSurface& s, const std::vector<char>& splittable,
+  std::vector<Triangle>& faces, TetMeshingResult& r)
+{
+  const std::vector<Triangle> boundary = boundaryFaces(faces);
+  std::vector<Triangle> input;
+  for (const auto& t : s.triangles)
+  {
+    input.push_back(sortedKey(t));
   }
   std::sort(input.begin(), input.end());
-  if (boundary != input)
+  if (boundary == input)
   {
-    return "TetGen's mesh boundary differs from the input surface (" + std::to_string(boundary.size()) +
-      " boundary faces for " + std::to_string(input.size()) + " input triangles)";
+    return {};
   }
-  return {};
+  std::string why;
+  if (!splittable.empty() && acceptSplitFaces(s, splittable, boundary, r, why))
+  {
+    return {};
+  }
+  r.splitTriangles.clear();
+  r.splitFaces.clear();
+  r.splitFaceParents.clear();
+  return "TetGen's mesh boundary differs from the input surface (" + std::to_string(boundary.size()) +
+    " boundary faces for " + std::to_string(input.size()) + " input triangles" + why + ")";
 }
 
 // The tetrahedra must fill exactly the volume the surface encloses. TetGen
 // 1.5 can return a mesh whose boundary is right but which folds over itself
-// (inverted tetrahedra, turned positive by convertMesh, so the sum comes out
-// too large): CGAL's oblong from the corpus, 64 parallel slabs, one slab
-// thinner than the size gave a mesh of 6e15 for a volume of 2e5. Such a mesh
+// (inverted tetrahedra: the sum of their volumes comes out too large): CGAL's
+// oblong from the corpus, 64 parallel slabs, one slab thinner than the size
+// gave a mesh of 6e15 for a volume of 2e5. (convertMesh now refuses
+// inverted tetrahedra first; this check stays for overlaps it cannot see.) Such a mesh
 // is refused like a crash, so the caller's fall-backs run.
 std::string volumeError(const TriangleSurface& s, const TetMesh& mesh)
 {
@@ -835,7 +1130,18 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
     return r;
   }
   r.switchesUsed = tetgenSwitches(options, volume);
-  TetGenRuns runs = runTetGen(s, options, holes, r.switchesUsed, timeLimits(s, options, volume));
+  const TimeLimits limits = timeLimits(s, options, volume);
+  TetGenRuns runs = runTetGen(s, options, holes, r.switchesUsed, limits);
+  if (!runs.failure.empty())
+  {
+    TetGenRuns twoRuns = recoverThenRefine(s, options, holes, volume, limits);
+    if (twoRuns.failure.empty() && twoRuns.status == 0)
+    {
+      runs = std::move(twoRuns);
+      r.switchesUsed = "pYzQ" + options.extraSwitches + ", then " + tetgenSwitches(options, volume, 'r');
+      r.recoveredThenRefined = true;
+    }
+  }
   r.attempts = runs.attempts;
   r.error = runsError(runs, r.switchesUsed, r.tetgenCode);
   if (!r.error.empty())
@@ -851,8 +1157,11 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
   {
     return r;
   }
-  std::vector<std::array<Index, 3>> faces = convertMesh(runs.points, runs.tets, r.mesh);
-  r.error = boundaryError(s, faces);
+  std::vector<std::array<Index, 3>> faces = convertMesh(runs.points, runs.tets, r.mesh, r.error);
+  if (r.error.empty())
+  {
+    r.error = boundaryError(s, options.splittableTriangles, faces, r);
+  }
   if (r.error.empty())
   {
     r.error = volumeError(s, r.mesh);

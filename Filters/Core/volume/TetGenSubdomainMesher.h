@@ -8,13 +8,18 @@
 // input triangle is the face of exactly one tetrahedron and the boundary of
 // the tetrahedra is exactly the input surface (switch Y: no Steiner point on
 // the boundary), so neighbouring subdomains meshed apart match node for node.
+// The one exception: triangles the caller marks splittable (a subdomain's
+// outer boundary) may come out split, where TetGen cannot keep them, into
+// faces on them (TetMeshingResult::splitFaces).
 // Shells with negative enclosed volume (cavities) get a hole point so TetGen
 // leaves them empty. TetGen's failures (it throws an int) become ok = false
 // with the code and its meaning. TetGen 1.5 sometimes aborts on an
 // assertion, or loops for ever in boundary recovery, for an input it meshes
 // when the points come in another order: then (a crash, or a run over its
 // processor-time limit, which is stopped) it runs again with the points
-// reversed, then shuffled with a fixed seed. The same input and options give the same mesh.
+// reversed, then shuffled with a fixed seed. If all three fail, the surface
+// is recovered in one run without refinement and the mesh refined in a
+// second (-rY). The same input and options give the same mesh.
 #include "TriangleSurface.h"
 
 #include <string>
@@ -34,6 +39,10 @@ struct TetMeshingOptions
   // still applies. Empty: none.
   std::vector<double> pointSizes;
   std::string extraSwitches;         // only O, S, T, V with numbers (what cannot break the contract)
+  // per surface triangle, nonzero where TetGen may split it if it cannot
+  // keep it (the outer boundary of a subdomain, which no neighbour shares;
+  // see TetMeshingResult::splitTriangles). Empty: the surface is kept exactly.
+  std::vector<char> splittableTriangles;
   // per TetGen run, processor and wall time; 0: 2 s + 30 us of processor time
   // per expected tetrahedron (about 6x TetGen's speed), 60 s + 10 us of wall time
   double timeLimitSeconds = 0.0;
@@ -53,6 +62,16 @@ struct TetMeshingResult
   TetMesh mesh;
   std::string switchesUsed;
   int attempts = 0; // TetGen runs: more than 1 if it crashed with the points in their first order
+  // true if TetGen crashed or stalled meshing and refining in one run, and
+  // the mesh comes from two: the surface recovered (-pY), then refined (-rY)
+  bool recoveredThenRefined = false;
+  // The splittable triangles TetGen split, ascending, and the faces that
+  // replace them: outward, indexing mesh.points (new points on the split
+  // triangles come after the surface's), each with the split triangle it
+  // lies on. Empty where the boundary is exactly the surface.
+  std::vector<Index> splitTriangles;
+  std::vector<Triangle> splitFaces;
+  std::vector<Index> splitFaceParents;
 };
 
 TetMeshingResult meshClosedSurface(const TriangleSurface& surface, const TetMeshingOptions& options);
