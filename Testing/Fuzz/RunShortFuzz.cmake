@@ -2,7 +2,8 @@
 # libFuzzer for SECONDS seconds on it. Fails on any finding, naming the saved
 # input and how to rerun it.
 #   -DFUZZER=<executable> -DSEEDS=<seed folder> -DWORK=<scratch folder>
-#   -DSECONDS=<n> [-DEXTRA_ARGS="<libFuzzer flags separated by spaces>"]
+#   -DSECONDS=<n> [-DSEED=<libFuzzer seed, 0 or absent: random>]
+#   [-DEXTRA_ARGS="<libFuzzer flags separated by spaces>"]
 foreach (required FUZZER SEEDS WORK SECONDS)
   if (NOT DEFINED ${required})
     message(FATAL_ERROR "RunShortFuzz.cmake: -D${required}=... is missing")
@@ -15,6 +16,9 @@ file(MAKE_DIRECTORY "${WORK}/artifacts")
 file(COPY "${SEEDS}/" DESTINATION "${WORK}/corpus")
 
 separate_arguments(extra UNIX_COMMAND "${EXTRA_ARGS}")
+if (DEFINED SEED AND NOT SEED STREQUAL "" AND NOT SEED EQUAL 0)
+  list(APPEND extra -seed=${SEED})
+endif ()
 set(command "${FUZZER}" "${WORK}/corpus"
   -max_total_time=${SECONDS}
   -rss_limit_mb=2048
