@@ -705,6 +705,13 @@ std::string surfacePointsError(const TriangleSurface& s, const std::vector<doubl
   return {};
 }
 
+// The switches of the first run of recoverThenRefine: the surface recovered
+// (-pY), nothing refined.
+std::string recoverySwitches(const TetMeshingOptions& options)
+{
+  return "pYzQ" + options.extraSwitches;
+}
+
 // The input of the second run of recoverThenRefine: the first run's mesh
 // (surface points first, in the surface's order), the surface triangles as
 // the faces -Y keeps, and with a size field a size at every point: a point
@@ -790,8 +797,7 @@ TetGenRuns recoverThenRefine(const TriangleSurface& s, const TetMeshingOptions& 
   TetMeshingOptions recoverOnly;
   recoverOnly.qualityRefinement = false;
   recoverOnly.extraSwitches = options.extraSwitches;
-  std::string switches = "pYzQ" + options.extraSwitches;
-  TetGenRuns first = runTetGen(s, recoverOnly, holes, switches, limits);
+  TetGenRuns first = runTetGen(s, recoverOnly, holes, recoverySwitches(options), limits);
   if (!first.failure.empty() || first.status != 0)
   {
     return first;
@@ -963,20 +969,16 @@ bool liesOn(const TriangleSurface& s, const Triangle& t, const Vec3& p, double t
 // `splittable`, every new face lies on a split triangle (its corners within
 // 1e-12 of the surface's bounding-box diagonal of its plane) and the new
 // faces have the split triangles' area; `why` says what failed otherwise.
+// `boundary` and `sortedInput` are the sorted keys of the mesh's boundary
+// faces and of the surface's triangles.
 bool acceptSplitFaces(const TriangleSurface& s, const std::vector<char>& splittable,
-  const std::vector<Triangle>& boundary, TetMeshingResult& r, std::string& why)
+  const std::vector<Triangle>& boundary, const std::vector<Triangle>& sortedInput, TetMeshingResult& r,
+  std::string& why)
 {
-  std::vector<Triangle> input;
-  for (const auto& t : s.triangles)
-  {
-    input.push_back(sortedKey(t));
-  }
-  std::vector<Triangle> sortedInput(input);
-  std::sort(sortedInput.begin(), sortedInput.end());
   double missingArea = 0, newArea = 0;
-  for (std::size_t t = 0; t < input.size(); ++t)
+  for (std::size_t t = 0; t < s.triangles.size(); ++t)
   {
-    if (contains(boundary, input[t]))
+    if (contains(boundary, sortedKey(s.triangles[t])))
     {
       continue;
     }
@@ -992,16 +994,7 @@ bool acceptSplitFaces(const TriangleSurface& s, const std::vector<char>& splitta
   std::vector<Triangle> added;
   std::copy_if(boundary.begin(), boundary.end(), std::back_inserter(added),
     [&](const Triangle& f) { return !contains(sortedInput, f); });
-  Vec3 low = s.points[0], high = s.points[0];
-  for (const Vec3& p : s.points)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      low[k] = std::min(low[k], p[k]);
-      high[k] = std::max(high[k], p[k]);
-    }
-  }
-  const double tolerance = 1e-12 * norm(high - low);
+  const double tolerance = 1e-12 * boundingBoxDiagonal(s.points);
   for (const Triangle& f : outwardFaces(r.mesh, added))
   {
     const Vec3 &a = r.mesh.points[f[0]], &b = r.mesh.points[f[1]], &c = r.mesh.points[f[2]];
@@ -1051,7 +1044,7 @@ std::string boundaryError(const TriangleSurface& s, const std::vector<char>& spl
     return {};
   }
   std::string why;
-  if (!splittable.empty() && acceptSplitFaces(s, splittable, boundary, r, why))
+  if (!splittable.empty() && acceptSplitFaces(s, splittable, boundary, input, r, why))
   {
     return {};
   }
@@ -1138,7 +1131,7 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
     if (twoRuns.failure.empty() && twoRuns.status == 0)
     {
       runs = std::move(twoRuns);
-      r.switchesUsed = "pYzQ" + options.extraSwitches + ", then " + tetgenSwitches(options, volume, 'r');
+      r.switchesUsed = recoverySwitches(options) + ", then " + tetgenSwitches(options, volume, 'r');
       r.recoveredThenRefined = true;
     }
   }
