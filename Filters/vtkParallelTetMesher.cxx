@@ -251,14 +251,14 @@ MeshedSubdomain meshSubdomain(ptm::SubdomainSurface& surface, const ptm::TetMesh
   }
   if (r.recoveredThenRefined)
   {
-    m.warnings.push_back("TetGen crashed or stalled meshing and refining in one run (in all three point "
-                         "orders); meshed in two runs: the surface recovered (-pY), then the mesh refined (-rY)");
+    m.warnings.push_back("TetGen crashed or stalled meshing and refining in one run (in all six input "
+                         "orders); meshed in two runs: " + r.switchesUsed);
   }
   else if (r.attempts > 1)
   {
-    m.warnings.push_back("TetGen crashed or stalled with the points in their canonical order and meshed "
-                         "them in another order (attempt " +
-      std::to_string(r.attempts) + ")");
+    m.warnings.push_back("TetGen crashed, stalled or merged close points with the points and facets in their "
+                         "canonical order and meshed them in another order (attempt " +
+      std::to_string(r.attempts) + ", switches " + r.switchesUsed + ")");
   }
   m.mesh = std::move(r.mesh);
   return m;

@@ -220,18 +220,62 @@ TEST(TetGenSubdomainMesher, StallInOnePointOrderIsStoppedAndRetriedInAnother)
   expectConformingMesh(file.data.surface, r, "stalled, then retried in another order");
 }
 
+TEST(TetGenSubdomainMesher, AbortInThreePointOrdersIsRetriedWithFacetsShuffled)
+{
+  // TetGen 1.5 aborts on this subdomain with the points as given, reversed
+  // and shuffled, in the facets' own order; with the facets shuffled too it
+  // meshes it (same mesh every time: the seeds are fixed)
+  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/tetgen_abort_in_three_point_orders.off");
+  ASSERT_TRUE(file.ok) << file.error;
+  const TriangleSurface& surface = file.data.surface;
+  TetMeshingOptions options;
+  options.maximumVolume = 1000;
+  options.minimumDihedralAngle = 10;
+  const TetMeshingResult a = meshClosedSurface(surface, options);
+  EXPECT_GT(a.attempts, 3);
+  EXPECT_FALSE(a.recoveredThenRefined);
+  expectConformingMesh(surface, a, "facets shuffled");
+  const TetMeshingResult b = meshClosedSurface(surface, options);
+  ASSERT_TRUE(b.ok) << b.error;
+  EXPECT_EQ(a.mesh.tets, b.mesh.tets);
+}
+
+TEST(TetGenSubdomainMesher, PointsMergedByTetGenAreRetriedWithAFinerTolerance)
+{
+  // two points of this subdomain are closer than TetGen's default tolerance:
+  // the run that merged them is not taken, and with -T1e-12 every surface
+  // point is kept
+  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/tetgen_merges_close_points.off");
+  ASSERT_TRUE(file.ok) << file.error;
+  const TriangleSurface& surface = file.data.surface;
+  TetMeshingOptions options;
+  options.maximumVolume = 1000;
+  options.minimumDihedralAngle = 10;
+  const TetMeshingResult r = meshClosedSurface(surface, options);
+  EXPECT_NE(r.switchesUsed.find("T1e-12"), std::string::npos) << r.switchesUsed;
+  expectConformingMesh(surface, r, "finer tolerance");
+}
+
 TEST(TetGenSubdomainMesher, AbortWhenRefiningIsMeshedInTwoRuns)
 {
   // TetGen 1.5 recovers this surface with -pY but aborts refining it in
-  // the same run in every point order; recovering first and refining that
-  // mesh in a second run (-rY) gives a refined mesh with the surface kept,
-  // also with a size field at the points (-m), and the same mesh every time
+  // the same run in the first three input orders (points as given,
+  // reversed, shuffled); recovering first and refining that mesh in a
+  // second run (-rY) gives a refined mesh with the surface kept, also with
+  // a size field at the points (-m), and the same mesh every time
   const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/tetgen_abort_when_refining.off");
   ASSERT_TRUE(file.ok) << file.error;
   const TriangleSurface& surface = file.data.surface;
   TetMeshingOptions options;
   options.maximumVolume = 5.0097439922402185e-06;
   options.minimumDihedralAngle = 10;
+  // with the facets shuffled too (all six orders, the default) it meshes in
+  // one run, so the two-run fall-back is reached with three orders only
+  const TetMeshingResult allOrders = meshClosedSurface(surface, options);
+  EXPECT_FALSE(allOrders.recoveredThenRefined);
+  EXPECT_GT(allOrders.attempts, 3);
+  expectConformingMesh(surface, allOrders, "meshed with the facets shuffled");
+  options.inputOrders = 3;
   const TetMeshingResult a = meshClosedSurface(surface, options);
   EXPECT_TRUE(a.recoveredThenRefined);
   expectConformingMesh(surface, a, "recovered, then refined");
@@ -337,6 +381,15 @@ TEST(TetGenSubdomainMesher, FailuresAreReportedNotThrown)
   r = meshClosedSurface(subdividedBox({ 0, 0, 0 }, { 1, 1, 1 }, 1), bad);
   EXPECT_FALSE(r.ok);
   EXPECT_NE(r.error.find("radius-edge"), std::string::npos);
+
+  for (int orders : { 0, kInputOrders + 1 })
+  {
+    TetMeshingOptions badOrders;
+    badOrders.inputOrders = orders;
+    r = meshClosedSurface(subdividedBox({ 0, 0, 0 }, { 1, 1, 1 }, 1), badOrders);
+    EXPECT_FALSE(r.ok);
+    EXPECT_NE(r.error.find("input orders"), std::string::npos) << r.error;
+  }
 
   TetMeshingOptions sneaky;
   sneaky.extraSwitches = "c";

@@ -362,9 +362,10 @@ bool runTetGenIsolated(tetgenio& in, const std::string& switches, double cpuSeco
 }
 
 // TetGen's input: the surface points in the given order (position[i] is
-// where surface point i goes), one facet per triangle, the hole points.
+// where surface point i goes), one facet per triangle in the order
+// `facets` (surface triangle of each facet), the hole points.
 void fillTetGenInput(const TriangleSurface& s, const std::vector<Index>& order,
-  const std::vector<int>& position, const std::vector<Vec3>& holes,
+  const std::vector<int>& position, const std::vector<Index>& facets, const std::vector<Vec3>& holes,
   const std::vector<double>& sizes, tetgenio& in)
 {
   const std::size_t n = s.points.size();
@@ -400,7 +401,7 @@ void fillTetGenInput(const TriangleSurface& s, const std::vector<Index>& order,
     f.polygonlist[0].vertexlist = new int[3];
     for (int k = 0; k < 3; ++k)
     {
-      f.polygonlist[0].vertexlist[k] = position[s.triangles[t][k]];
+      f.polygonlist[0].vertexlist[k] = position[s.triangles[facets[t]][k]];
     }
   }
   if (!holes.empty())
@@ -428,11 +429,11 @@ std::string inputError(const TriangleSurface& s, const TetMeshingOptions& option
   }
   if (!(options.radiusEdgeRatio > 1.0) || !(options.maximumVolume >= 0) ||
     !(options.minimumDihedralAngle >= 0 && options.minimumDihedralAngle < 70) ||
-    !(options.timeLimitSeconds >= 0))
+    !(options.timeLimitSeconds >= 0) || options.inputOrders < 1 || options.inputOrders > kInputOrders)
   {
     return "invalid options: the radius-edge ratio must exceed 1, the maximum volume and the "
            "time limit must not be negative, the minimum dihedral angle must lie in [0, 70) "
-           "degrees";
+           "degrees, the input orders in [1, " + std::to_string(kInputOrders) + "]";
   }
   if (!options.pointSizes.empty() &&
     (options.pointSizes.size() != n ||
@@ -567,24 +568,37 @@ TimeLimits timeLimits(const TriangleSurface& s, const TetMeshingOptions& options
   return limits;
 }
 
-// The order in which attempt 0, 1 or 2 gives TetGen the n points: their
-// own, reversed, shuffled with a fixed seed.
-void pointOrder(std::size_t n, int attempt, std::vector<Index>& order)
+// A permutation of 0..n-1 by a xorshift generator from `seed`.
+void shuffle(std::vector<Index>& order, std::uint64_t seed)
+{
+  std::uint64_t state = seed;
+  for (std::size_t i = order.size(); i > 1; --i)
+  {
+    state ^= state << 13;
+    state ^= state >> 7;
+    state ^= state << 17;
+    std::swap(order[i - 1], order[state % i]);
+  }
+}
+
+// The order in which attempt 0..kInputOrders-1 gives TetGen the n points
+// and the m triangles: their own; the points reversed; the points shuffled;
+// then both shuffled, with a fixed seed per attempt.
+void inputOrder(std::size_t n, std::size_t m, int attempt, std::vector<Index>& points, std::vector<Index>& facets)
 {
   for (std::size_t i = 0; i < n; ++i)
   {
-    order[i] = static_cast<Index>(attempt == 1 ? n - 1 - i : i);
+    points[i] = static_cast<Index>(attempt == 1 ? n - 1 - i : i);
   }
-  if (attempt == 2)
+  facets.resize(m);
+  std::iota(facets.begin(), facets.end(), Index{ 0 });
+  if (attempt >= 2)
   {
-    std::uint64_t state = 0x9E3779B97F4A7C15ull;
-    for (std::size_t i = n - 1; i > 0; --i)
-    {
-      state ^= state << 13;
-      state ^= state >> 7;
-      state ^= state << 17;
-      std::swap(order[i], order[state % (i + 1)]);
-    }
+    shuffle(points, 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(attempt - 2));
+  }
+  if (attempt >= 3)
+  {
+    shuffle(facets, 0xD1B54A32D192ED03ull + static_cast<std::uint64_t>(attempt));
   }
 }
 
@@ -598,31 +612,37 @@ struct TetGenRuns
   std::string failure;
   int status = 0, code = 0;
   int attempts = 0;
+  std::string tolerance; // TetGen's -T switch if the default merged points
 };
 
 // TetGen 1.5 sometimes aborts on an assertion (insphere_s: oriB != 0,
-// finddirection: nonconvex) or loops for ever in boundary recovery for an
-// input it meshes when the points come in another order. So a crash, an
-// internal error or a run over the time limit is retried with the points
-// reversed, then shuffled (a fixed seed): still the same mesh for the same
-// input on any rank.
-TetGenRuns runTetGen(const TriangleSurface& s, const TetMeshingOptions& options, const std::vector<Vec3>& holes,
+// finddirection: nonconvex, addsteiner4recoversegment) or loops for ever in
+// boundary recovery for an input it meshes when the points come in another
+// order. So a crash, an internal error or a run over the time limit is
+// retried with the points reversed, then shuffled, then with the facets
+// shuffled too (fixed seeds): still the same mesh for the same input on any
+// rank. The facet order matters as much: OCCT's Top at K = 16 (parallel
+// planes), subdomain 4 of 3,851 points, crashed with -pY in the first three
+// orders; with Debian's tetgen it meshed in 3 of 10 random point orders, 7
+// of 10 facet orders and 10 of 12 with both shuffled.
+TetGenRuns runInOrders(const TriangleSurface& s, const TetMeshingOptions& options, const std::vector<Vec3>& holes,
   const std::string& switches, const TimeLimits& limits)
 {
   const std::size_t n = s.points.size();
   TetGenRuns runs;
   runs.order.resize(n);
   bool meshed = false;
-  for (int attempt = 0; attempt < 3 && !meshed; ++attempt)
+  std::vector<Index> facets;
+  for (int attempt = 0; attempt < options.inputOrders && !meshed; ++attempt)
   {
-    pointOrder(n, attempt, runs.order);
+    inputOrder(n, s.triangles.size(), attempt, runs.order, facets);
     std::vector<int> position(n);
     for (std::size_t i = 0; i < n; ++i)
     {
       position[runs.order[i]] = static_cast<int>(i);
     }
     tetgenio in;
-    fillTetGenInput(s, runs.order, position, holes, options.pointSizes, in);
+    fillTetGenInput(s, runs.order, position, facets, holes, options.pointSizes, in);
     runs.points.clear();
     runs.tets.clear();
     runs.failure.clear();
@@ -641,14 +661,58 @@ TetGenRuns runTetGen(const TriangleSurface& s, const TetMeshingOptions& options,
   return runs;
 }
 
+// Whether a run that meshed kept every surface point, in its input order,
+// first in its output.
+bool keptSurfacePoints(const TriangleSurface& s, const TetGenRuns& runs)
+{
+  const std::size_t n = s.points.size();
+  if (runs.points.size() < 3 * n)
+  {
+    return false;
+  }
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    if (std::memcmp(&runs.points[3 * k], s.points[runs.order[k]].data(), 3 * sizeof(double)) != 0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// TetGen merges input points closer than its tolerance (-T, 1e-8 of the
+// bounding-box diagonal) as duplicates. OCCT's Bottom at K = 64 (parallel
+// planes), subdomain 47 of 6,160 points, has two points 9.5e-9 of its
+// diagonal apart: TetGen crashed in the first order and merged them in the
+// second, which the mesh cannot keep. A run that did not keep every
+// surface point is therefore repeated, in all orders, with a tolerance of
+// 1e-12 (Debian's tetgen -pY then meshed 5 of 6 shuffled orders). Only
+// then: the tolerance also enters TetGen's encroachment tests, so every
+// other mesh stays as it was.
+constexpr const char* kFineTolerance = "T1e-12";
+
+TetGenRuns runTetGen(const TriangleSurface& s, const TetMeshingOptions& options, const std::vector<Vec3>& holes,
+  const std::string& switches, const TimeLimits& limits)
+{
+  TetGenRuns runs = runInOrders(s, options, holes, switches, limits);
+  if (runs.failure.empty() && runs.status == 0 && !keptSurfacePoints(s, runs))
+  {
+    const int before = runs.attempts;
+    runs = runInOrders(s, options, holes, switches + kFineTolerance, limits);
+    runs.attempts += before;
+    runs.tolerance = kFineTolerance;
+  }
+  return runs;
+}
+
 // Why the runs gave no mesh, and TetGen's code for it; empty if they gave one.
 std::string runsError(const TetGenRuns& runs, const std::string& switches, int& tetgenCode)
 {
   if (!runs.failure.empty())
   {
     tetgenCode = runs.code;
-    return runs.failure + (runs.attempts > 1 ? " (also with the points in " + std::to_string(runs.attempts - 1) +
-                                                 " other orders)"
+    return runs.failure + (runs.attempts > 1 ? " (also in " + std::to_string(runs.attempts - 1) +
+                                                 " other orders of the points and facets)"
                                              : "");
   }
   if (runs.status == 1)
@@ -785,7 +849,7 @@ void fillRefinementInput(const TriangleSurface& s, const TetGenRuns& first, cons
 // TetGen 1.5 can recover a surface (-pY) that it then fails to refine in
 // the same run: CGAL's spool from the corpus at K = 64 (recursive
 // bisection), subdomain 16 of 274 points, aborts in locate()
-// (searchtet->ver != 4) with -q or -a in all three point orders, while -pY
+// (searchtet->ver != 4) with -q or -a in the first three point orders, while -pY
 // alone meshes it (adding one point inside), and a second run refining that
 // mesh (-rY with the same -q, -a, -m) gives 1,135 tetrahedra with the
 // surface kept. So a crash or stall of the one-run mesh is retried so: the
@@ -807,6 +871,7 @@ TetGenRuns recoverThenRefine(const TriangleSurface& s, const TetMeshingOptions& 
     restoreSurfaceOrder(first, s.points.size());
   }
   TetGenRuns second;
+  second.tolerance = first.tolerance;
   second.failure = surfacePointsError(s, first.points);
   if (!second.failure.empty())
   {
@@ -818,7 +883,7 @@ TetGenRuns recoverThenRefine(const TriangleSurface& s, const TetMeshingOptions& 
   std::iota(second.order.begin(), second.order.end(), Index{ 0 });
   second.attempts = 1;
   bool timedOut = false;
-  runTetGenIsolated(in, tetgenSwitches(options, volume, 'r'), limits.cpu, limits.wall, second.points,
+  runTetGenIsolated(in, tetgenSwitches(options, volume, 'r') + first.tolerance, limits.cpu, limits.wall, second.points,
     second.tets, second.status, second.code, timedOut, second.failure);
   return second;
 }
@@ -1125,13 +1190,15 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
   r.switchesUsed = tetgenSwitches(options, volume);
   const TimeLimits limits = timeLimits(s, options, volume);
   TetGenRuns runs = runTetGen(s, options, holes, r.switchesUsed, limits);
+  r.switchesUsed += runs.tolerance;
   if (!runs.failure.empty())
   {
     TetGenRuns twoRuns = recoverThenRefine(s, options, holes, volume, limits);
     if (twoRuns.failure.empty() && twoRuns.status == 0)
     {
       runs = std::move(twoRuns);
-      r.switchesUsed = recoverySwitches(options) + ", then " + tetgenSwitches(options, volume, 'r');
+      r.switchesUsed = recoverySwitches(options) + runs.tolerance + ", then " + tetgenSwitches(options, volume, 'r') +
+        runs.tolerance;
       r.recoveredThenRefined = true;
     }
   }

@@ -17,7 +17,8 @@
 // assertion, or loops for ever in boundary recovery, for an input it meshes
 // when the points come in another order: then (a crash, or a run over its
 // processor-time limit, which is stopped) it runs again with the points
-// reversed, then shuffled with a fixed seed. If all three fail, the surface
+// reversed, then shuffled, then with the facets shuffled too (fixed seeds;
+// six orders in all). If all of them fail, the surface
 // is recovered in one run without refinement and the mesh refined in a
 // second (-rY). The same input and options give the same mesh.
 #include "TriangleSurface.h"
@@ -26,6 +27,9 @@
 
 namespace ptm
 {
+// How many input orders TetMeshingOptions::inputOrders allows (see there).
+constexpr int kInputOrders = 6;
+
 struct TetMeshingOptions
 {
   double radiusEdgeRatio = 2.0;      // -q bound, > 1
@@ -46,6 +50,11 @@ struct TetMeshingOptions
   // per TetGen run, processor and wall time; 0: 2 s + 30 us of processor time
   // per expected tetrahedron (about 6x TetGen's speed), 60 s + 10 us of wall time
   double timeLimitSeconds = 0.0;
+  // input orders tried after a crash or stall before the two-run fall-back,
+  // 1..kInputOrders: the points as given, reversed, shuffled, then points
+  // and facets shuffled (fixed seeds, so the same mesh on any rank). Fewer
+  // orders fail sooner on a surface TetGen cannot mesh.
+  int inputOrders = kInputOrders;
 };
 
 struct TetMesh
