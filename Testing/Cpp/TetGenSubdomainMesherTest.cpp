@@ -71,6 +71,23 @@ void expectConformingMesh(const TriangleSurface& s, const TetMeshingResult& r, c
   }
   EXPECT_EQ(boundary, input) << label << ": boundary is not the input surface";
 }
+
+// A surface of Data/regression (empty, and the test failed, if unreadable).
+TriangleSurface regressionSurface(const std::string& name)
+{
+  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/" + name);
+  EXPECT_TRUE(file.ok) << file.error;
+  return file.data.surface;
+}
+
+// The options the pipeline gives TetGen: a volume bound and 10 degrees.
+TetMeshingOptions boundedOptions(double maximumVolume)
+{
+  TetMeshingOptions options;
+  options.maximumVolume = maximumVolume;
+  options.minimumDihedralAngle = 10;
+  return options;
+}
 } // namespace
 
 TEST(TetGenSubdomainMesher, BoxAndBallKeepTheirSurfaceExactly)
@@ -191,9 +208,7 @@ TEST(TetGenSubdomainMesher, AbortInOnePointOrderIsRetriedInAnother)
   // TetGen 1.5 aborts on this surface (an assertion in insphere_s) with its
   // points in file order and meshes it with them reversed; the result keeps
   // the surface's own point order and is the same every time
-  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/tetgen_abort_in_canonical_order.off");
-  ASSERT_TRUE(file.ok) << file.error;
-  const TriangleSurface& surface = file.data.surface;
+  const TriangleSurface surface = regressionSurface("tetgen_abort_in_canonical_order.off");
   const TetMeshingResult a = meshClosedSurface(surface, {});
   EXPECT_EQ(a.attempts, 2);
   expectConformingMesh(surface, a, "retried in another order");
@@ -208,16 +223,15 @@ TEST(TetGenSubdomainMesher, StallInOnePointOrderIsStoppedAndRetriedInAnother)
   // TetGen 1.5 loops for ever recovering this surface's boundary with its
   // points in file order (bound of the benchmark it came from); the automatic
   // processor-time limit stops that run and the reversed order meshes it
-  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/tetgen_stall_in_canonical_order.off");
-  ASSERT_TRUE(file.ok) << file.error;
+  const TriangleSurface surface = regressionSurface("tetgen_stall_in_canonical_order.off");
   TetMeshingOptions options;
   options.maximumVolume = 1.6696252433859985e-06;
   // (no wall-clock bound here: 2 attempts prove the first was stopped, and
   // a busy CI machine took 71 s for what takes 20 s alone; CTest's timeout
   // catches a hang)
-  const TetMeshingResult r = meshClosedSurface(file.data.surface, options);
+  const TetMeshingResult r = meshClosedSurface(surface, options);
   EXPECT_EQ(r.attempts, 2);
-  expectConformingMesh(file.data.surface, r, "stalled, then retried in another order");
+  expectConformingMesh(surface, r, "stalled, then retried in another order");
 }
 
 TEST(TetGenSubdomainMesher, AbortInThreePointOrdersIsRetriedWithFacetsShuffled)
@@ -225,12 +239,8 @@ TEST(TetGenSubdomainMesher, AbortInThreePointOrdersIsRetriedWithFacetsShuffled)
   // TetGen 1.5 aborts on this subdomain with the points as given, reversed
   // and shuffled, in the facets' own order; with the facets shuffled too it
   // meshes it (same mesh every time: the seeds are fixed)
-  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/tetgen_abort_in_three_point_orders.off");
-  ASSERT_TRUE(file.ok) << file.error;
-  const TriangleSurface& surface = file.data.surface;
-  TetMeshingOptions options;
-  options.maximumVolume = 1000;
-  options.minimumDihedralAngle = 10;
+  const TriangleSurface surface = regressionSurface("tetgen_abort_in_three_point_orders.off");
+  const TetMeshingOptions options = boundedOptions(1000);
   const TetMeshingResult a = meshClosedSurface(surface, options);
   EXPECT_GT(a.attempts, 3);
   EXPECT_FALSE(a.recoveredThenRefined);
@@ -245,12 +255,8 @@ TEST(TetGenSubdomainMesher, PointsMergedByTetGenAreRetriedWithAFinerTolerance)
   // two points of this subdomain are closer than TetGen's default tolerance:
   // the run that merged them is not taken, and with -T1e-12 every surface
   // point is kept
-  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/tetgen_merges_close_points.off");
-  ASSERT_TRUE(file.ok) << file.error;
-  const TriangleSurface& surface = file.data.surface;
-  TetMeshingOptions options;
-  options.maximumVolume = 1000;
-  options.minimumDihedralAngle = 10;
+  const TriangleSurface surface = regressionSurface("tetgen_merges_close_points.off");
+  const TetMeshingOptions options = boundedOptions(1000);
   const TetMeshingResult r = meshClosedSurface(surface, options);
   EXPECT_NE(r.switchesUsed.find("T1e-12"), std::string::npos) << r.switchesUsed;
   expectConformingMesh(surface, r, "finer tolerance");
@@ -263,12 +269,8 @@ TEST(TetGenSubdomainMesher, AbortWhenRefiningIsMeshedInTwoRuns)
   // reversed, shuffled); recovering first and refining that mesh in a
   // second run (-rY) gives a refined mesh with the surface kept, also with
   // a size field at the points (-m), and the same mesh every time
-  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/tetgen_abort_when_refining.off");
-  ASSERT_TRUE(file.ok) << file.error;
-  const TriangleSurface& surface = file.data.surface;
-  TetMeshingOptions options;
-  options.maximumVolume = 5.0097439922402185e-06;
-  options.minimumDihedralAngle = 10;
+  const TriangleSurface surface = regressionSurface("tetgen_abort_when_refining.off");
+  TetMeshingOptions options = boundedOptions(5.0097439922402185e-06);
   // with the facets shuffled too (all six orders, the default) it meshes in
   // one run, so the two-run fall-back is reached with three orders only
   const TetMeshingResult allOrders = meshClosedSurface(surface, options);
@@ -296,12 +298,8 @@ TEST(TetGenSubdomainMesher, SplittableTrianglesMayBeSplitOthersNot)
 {
   // TetGen 1.5 -Y splits two coplanar triangles of this surface into four
   // around a point on them (a defect: it should keep them)
-  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/tetgen_splits_a_facet.off");
-  ASSERT_TRUE(file.ok) << file.error;
-  const TriangleSurface& surface = file.data.surface;
-  TetMeshingOptions options;
-  options.maximumVolume = 433900;
-  options.minimumDihedralAngle = 10;
+  const TriangleSurface surface = regressionSurface("tetgen_splits_a_facet.off");
+  TetMeshingOptions options = boundedOptions(433900);
 
   // kept exactly unless told otherwise: refused, naming the boundary
   TetMeshingResult r = meshClosedSurface(surface, options);
