@@ -661,23 +661,26 @@ TetGenRuns runInOrders(const TriangleSurface& s, const TetMeshingOptions& option
   return runs;
 }
 
-// Whether a run that meshed kept every surface point, in its input order,
-// first in its output.
-bool keptSurfacePoints(const TriangleSurface& s, const TetGenRuns& runs)
+// Why TetGen did not keep every surface point where it was, first in its
+// output (in the input order `order`, empty: the surface's own); empty if it did.
+std::string surfacePointsError(
+  const TriangleSurface& s, const std::vector<double>& outPoints, const std::vector<Index>& order = {})
 {
   const std::size_t n = s.points.size();
-  if (runs.points.size() < 3 * n)
+  if (static_cast<int>(outPoints.size() / 3) < static_cast<int>(n))
   {
-    return false;
+    return "TetGen returned fewer points than the surface has";
   }
   for (std::size_t k = 0; k < n; ++k)
   {
-    if (std::memcmp(&runs.points[3 * k], s.points[runs.order[k]].data(), 3 * sizeof(double)) != 0)
+    const std::size_t i = order.empty() ? k : order[k];
+    if (std::memcmp(&outPoints[3 * k], s.points[i].data(), 3 * sizeof(double)) != 0)
     {
-      return false;
+      return "TetGen moved or reordered surface point " + std::to_string(i) +
+        " (the surface may have duplicate points)";
     }
   }
-  return true;
+  return {};
 }
 
 // TetGen merges input points closer than its tolerance (-T, 1e-8 of the
@@ -695,7 +698,7 @@ TetGenRuns runTetGen(const TriangleSurface& s, const TetMeshingOptions& options,
   const std::string& switches, const TimeLimits& limits)
 {
   TetGenRuns runs = runInOrders(s, options, holes, switches, limits);
-  if (runs.failure.empty() && runs.status == 0 && !keptSurfacePoints(s, runs))
+  if (runs.failure.empty() && runs.status == 0 && !surfacePointsError(s, runs.points, runs.order).empty())
   {
     const int before = runs.attempts;
     runs = runInOrders(s, options, holes, switches + kFineTolerance, limits);
@@ -750,24 +753,6 @@ void restoreSurfaceOrder(TetGenRuns& runs, std::size_t n)
   }
 }
 
-// Whether TetGen kept every surface point where it was, first in its output.
-std::string surfacePointsError(const TriangleSurface& s, const std::vector<double>& outPoints)
-{
-  const std::size_t n = s.points.size();
-  if (static_cast<int>(outPoints.size() / 3) < static_cast<int>(n))
-  {
-    return "TetGen returned fewer points than the surface has";
-  }
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    if (std::memcmp(&outPoints[3 * i], s.points[i].data(), 3 * sizeof(double)) != 0)
-    {
-      return "TetGen moved or reordered surface point " + std::to_string(i) +
-        " (the surface may have duplicate points)";
-    }
-  }
-  return {};
-}
 
 // The switches of the first run of recoverThenRefine: the surface recovered
 // (-pY), nothing refined.
