@@ -90,7 +90,7 @@ def find_plugin(explicit):
     # the build tree's plugin (which may be another version)
     if explicit:
         if not os.path.isfile(explicit):
-            raise SystemExit("error: --plugin %s: no such file" % explicit)
+            fail("--plugin %s: no such file" % explicit)
         return os.path.abspath(explicit)
     candidates = [os.environ.get("PTM_PLUGIN", ""),
                    os.path.join(HERE, "..", "build", "lib", "paraview-plugins", "ParallelTetMesher",
@@ -98,13 +98,29 @@ def find_plugin(explicit):
     for c in candidates:
         if c and os.path.isfile(c):
             return os.path.abspath(c)
-    raise SystemExit("error: ParallelTetMesher.so not found; build the project or pass --plugin")
+    fail("ParallelTetMesher.so not found; build the project or pass --plugin")
+
+
+class Failure(Exception):
+    """A refused request or a failed stage, with its reason."""
 
 
 def fail(message):
-    sys.stderr.write("tetmesh: error: %s\n" % message)
-    sys.stderr.flush()
-    sys.exit(1)
+    # Raised, not sys.exit(): under mpiexec, pvbatch's rank 0 leaving by
+    # exit() skips the finalizing barrier the other ranks wait in, so
+    # mpiexec killed them and a clean, agreed failure printed a SIGTERM stack
+    # trace from every other rank. An exception ends the script normally:
+    # every rank finalizes and pvbatch exits with 1 (report_failure prints
+    # the reason without a traceback).
+    raise Failure(message)
+
+
+def report_failure(kind, value, traceback):
+    if issubclass(kind, Failure):
+        sys.stderr.write("tetmesh: error: %s\n" % value)
+        sys.stderr.flush()
+    else:
+        sys.__excepthook__(kind, value, traceback)
 
 
 class ErrorLog:
@@ -305,6 +321,8 @@ def main(argv):
 
 
 if __name__ == "__main__":
-    # On success the script just ends, so pvbatch finalizes MPI on every rank;
-    # failures leave through fail() with a non-zero code.
+    # The script ends normally, so pvbatch finalizes MPI on every rank; a
+    # failure ends it by the exception fail() raises, printed as one line
+    # "tetmesh: error: ...", and pvbatch exits with 1.
+    sys.excepthook = report_failure
     main(sys.argv[1:])
