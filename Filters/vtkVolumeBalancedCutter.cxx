@@ -302,6 +302,16 @@ int vtkVolumeBalancedCutter::RequestData(
       vtkWarningMacro(<< warning);
     }
   }
+  const std::size_t subdomains = result.subdomainVolume.size();
+  const std::size_t ranks = static_cast<std::size_t>(ptm::rankCount(controller));
+  if (run.Rank() == 0 && subdomains < ranks)
+  {
+    // a run that silently leaves ranks idle looks like a slow machine
+    const std::size_t idle = ranks - subdomains;
+    vtkWarningMacro(<< "NumberOfSubdomains " << subdomains << " is less than the " << ranks << " ranks: " << idle
+                    << (idle == 1 ? " rank gets no subdomain and stays idle" : " ranks get no subdomain and stay idle")
+                    << " while the others mesh (give at least one subdomain per rank, or 0 for one each)");
+  }
   if (run.AbortedAnywhere())
   {
     return run.Aborted();
