@@ -4,6 +4,7 @@
 #include "PipelineRequests.h"
 #include "PolyDataConversion.h"
 #include "PropertyChecks.h"
+#include "RankCollectives.h"
 #include "StageRun.h"
 #include "SurfaceComplexArrays.h"
 #include "SurfaceRelaxation.h"
@@ -23,6 +24,29 @@
 
 namespace
 {
+// Every rank holds the whole complex here; the check that relaxation made
+// no subdomain cross itself is shared out: each rank checks the subdomains
+// it owns (the cutter's assignment; every K-th by rank if there is none),
+// and the points to put back are gathered from all, so every rank puts back
+// the same ones as a single process checking everything.
+void shareCrossingChecks(
+  vtkMultiProcessController* controller, const ptm::ComplexPiece& whole, int rank, ptm::RelaxationOptions& options)
+{
+  const int ranks = ptm::rankCount(controller);
+  if (ranks < 2)
+  {
+    return;
+  }
+  const std::vector<int> owner = whole.subdomainRank;
+  options.checksSubdomain = [owner, rank, ranks](int s) {
+    return s < static_cast<int>(owner.size()) ? owner[s] == rank : s % ranks == rank;
+  };
+  options.unionOverProcesses = [controller](const std::vector<ptm::Index>& points) {
+    const std::vector<long long> all =
+      ptm::allGatherValues(controller, std::vector<long long>(points.begin(), points.end()));
+    return std::vector<ptm::Index>(all.begin(), all.end());
+  };
+}
 // The figures of the relaxation as one-value arrays of the output's field data.
 void addRelaxationFields(vtkFieldData* fd, const ptm::RelaxationResult& result, int mode)
 {
@@ -123,6 +147,7 @@ int vtkSurfaceRelaxer::RequestData(
   options.relaxationFactor = this->RelaxationFactor;
   options.featureAngleDegrees = this->FeatureAngle;
   options.nearCutsOnly = this->Region == NEAR_CUTS;
+  shareCrossingChecks(this->Controller, whole, run.Rank(), options);
   ptm::RelaxationResult result;
   try
   {

@@ -34,6 +34,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
+#include <condition_variable>
+#include <functional>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -470,4 +476,112 @@ TEST(SurfaceRelaxationOptions, DeviationBoundAndBadMode)
   EXPECT_GT(l.change.deviationInputToOutput, r.change.deviationInputToOutput);
   o.mode = static_cast<RelaxationMode>(7);
   EXPECT_FALSE(relaxSurfaceComplex(after, o).ok);
+}
+
+namespace
+{
+// Two processes of one relaxation, as vtkSurfaceRelaxer runs them on two
+// ranks: threads that swap their points through this, a collective call
+// both make once per round.
+class TwoProcessUnion
+{
+public:
+  std::vector<Index> swap(int process, const std::vector<Index>& mine)
+  {
+    std::unique_lock<std::mutex> lock(this->Mutex);
+    const long generation = this->Generation;
+    this->Slots[process] = mine;
+    if (++this->Arrived == 2)
+    {
+      this->All = this->Slots[0];
+      this->All.insert(this->All.end(), this->Slots[1].begin(), this->Slots[1].end());
+      this->Arrived = 0;
+      ++this->Generation;
+      this->Changed.notify_all();
+      return this->All;
+    }
+    this->Changed.wait(lock, [&] { return this->Generation != generation; });
+    return this->All;
+  }
+
+private:
+  std::mutex Mutex;
+  std::condition_variable Changed;
+  std::vector<Index> Slots[2];
+  std::vector<Index> All;
+  int Arrived = 0;
+  long Generation = 0;
+};
+
+// Relaxes `a` and `b` (copies of one complex) as processes 0 and 1, each
+// checking the subdomains `checks` gives it; counts the checks made.
+void relaxAsTwoProcesses(SurfaceComplex& a, SurfaceComplex& b, RelaxationResult results[2],
+  const std::function<bool(int process, int subdomain)>& checks)
+{
+  TwoProcessUnion exchange;
+  SurfaceComplex* complexes[2] = { &a, &b };
+  std::vector<std::thread> processes;
+  for (int p = 0; p < 2; ++p)
+  {
+    processes.emplace_back([&, p] {
+      RelaxationOptions o;
+      o.checksSubdomain = [&, p](int s) { return checks(p, s); };
+      o.unionOverProcesses = [&, p](const std::vector<Index>& points) { return exchange.swap(p, points); };
+      results[p] = relaxSurfaceComplex(*complexes[p], o);
+    });
+  }
+  for (std::thread& t : processes)
+  {
+    t.join();
+  }
+}
+} // namespace
+
+// The check for crossings after relaxation shared out between two
+// processes (each its own subdomains, the points to put back gathered from
+// both) gives every process exactly the one-process result, and a check
+// failing on one process fails both without either waiting for ever.
+TEST(SurfaceRelaxationShared, TwoProcessesGiveTheOneProcessResult)
+{
+  for (const CutStrategy strategy : { CutStrategy::ParallelPlanes, CutStrategy::RecursiveBisection })
+  {
+    const DecompositionResult d = decomposeVolumeBalanced(icosphere({ 0, 0, 0 }, 1.0, 3), stageCaseOptions(7, strategy));
+    ASSERT_TRUE(d.ok) << d.error;
+    SurfaceComplex before = d.complex;
+    ASSERT_TRUE(triangulateAllInterfaces(before).ok);
+    SurfaceComplex single = before;
+    const RelaxationResult one = relaxSurfaceComplex(single, RelaxationOptions{});
+    ASSERT_TRUE(one.ok) << one.error;
+    ASSERT_GT(one.acceptedMoves, 0u);
+
+    SurfaceComplex a = before, b = before;
+    RelaxationResult two[2];
+    std::atomic<int> checked{ 0 };
+    relaxAsTwoProcesses(a, b, two, [&](int p, int s) {
+      const bool mine = s % 2 == p;
+      checked += mine ? 1 : 0;
+      return mine;
+    });
+    for (const RelaxationResult& r : two)
+    {
+      ASSERT_TRUE(r.ok) << r.error;
+      EXPECT_EQ(r.undoneMoves, one.undoneMoves);
+    }
+    EXPECT_EQ(a.points, single.points) << toString(strategy);
+    EXPECT_EQ(b.points, single.points) << toString(strategy);
+    EXPECT_GE(checked.load(), 7) << "every subdomain checked by one process";
+
+    SurfaceComplex c = before, e = before;
+    relaxAsTwoProcesses(c, e, two, [](int p, int s) -> bool {
+      if (p == 1 && s == 1)
+      {
+        throw std::runtime_error("injected");
+      }
+      return s % 2 == p;
+    });
+    EXPECT_FALSE(two[0].ok);
+    EXPECT_FALSE(two[1].ok);
+    EXPECT_NE(two[0].error.find("failed on another process"), std::string::npos) << two[0].error;
+    EXPECT_NE(two[1].error.find("injected"), std::string::npos) << two[1].error;
+  }
 }

@@ -864,6 +864,48 @@ std::vector<Index> trianglesNearMoved(const TriangleSurface& surface, const std:
   return list;
 }
 
+// The moved points of the triangles of subdomain s that cross others of
+// it, added to `back`.
+void crossingMovedPoints(const SurfaceComplex& c, const std::vector<Vec3>& original,
+  const std::vector<Index>& identity, int s, std::set<Index>& back)
+{
+  SubdomainSurface extracted;
+  std::string unused;
+  if (!extractSubdomainSurface(c, identity, s, extracted, unused))
+  {
+    return; // no triangles, or not closed: nothing the check could say
+  }
+  const TriangleSurface& surface = extracted.surface;
+  auto complexPoint = [&](Index local) { return extracted.globalIds[local]; };
+  std::vector<char> moved(surface.triangles.size(), 0);
+  for (std::size_t i = 0; i < surface.triangles.size(); ++i)
+  {
+    for (Index v : surface.triangles[i])
+    {
+      moved[i] = moved[i] || c.points[complexPoint(v)] != original[complexPoint(v)];
+    }
+  }
+  const std::vector<Index> near = trianglesNearMoved(surface, moved);
+  if (near.empty())
+  {
+    return;
+  }
+  const SelfIntersectionReport report = checkSelfIntersection(surface, near, 64);
+  for (const auto& [f, g] : report.crossings)
+  {
+    for (Index i : { f, g })
+    {
+      for (Index v : surface.triangles[i])
+      {
+        if (c.points[complexPoint(v)] != original[complexPoint(v)])
+        {
+          back.insert(complexPoint(v));
+        }
+      }
+    }
+  }
+}
+
 // Moves that made a subdomain's surface cross itself are undone: every
 // moved node of a crossing triangle goes back where it was, until no
 // subdomain crosses itself (a few rounds; the complex before relaxation is
@@ -874,8 +916,13 @@ std::vector<Index> trianglesNearMoved(const TriangleSurface& surface, const std:
 // cut by 16 parallel planes (the core alone, with the interfaces at the
 // sweep's size) one node was put back. Checked with CGAL's exact predicates
 // among the triangles of moved nodes and those whose boxes reach theirs.
-// Returns the number of nodes put back.
-std::size_t undoCrossingMoves(SurfaceComplex& c, const std::vector<Vec3>& original)
+// With options.checksSubdomain, each process checks its share of the
+// subdomains and the points to put back are the union over processes, so
+// every process puts back the same points as one process checking all.
+// Returns the number of nodes put back; `error` is set (on every process)
+// where a check failed on any.
+std::size_t undoCrossingMoves(
+  SurfaceComplex& c, const std::vector<Vec3>& original, const RelaxationOptions& options, std::string& error)
 {
   std::size_t undone = 0;
   int subdomains = 0; // the labels in use (a piece's complex may not set subdomainCount)
@@ -888,46 +935,37 @@ std::size_t undoCrossingMoves(SurfaceComplex& c, const std::vector<Vec3>& origin
   {
     identity[v] = static_cast<Index>(v);
   }
+  constexpr Index kFailed = -1; // sent instead of points where a check threw
   for (int round = 0; round < 4; ++round)
   {
     std::set<Index> back;
-    for (int s = 0; s < subdomains; ++s)
+    try
     {
-      SubdomainSurface extracted;
-      std::string unused;
-      if (!extractSubdomainSurface(c, identity, s, extracted, unused))
+      for (int s = 0; s < subdomains; ++s)
       {
-        continue; // no triangles, or not closed: nothing the check could say
-      }
-      const TriangleSurface& surface = extracted.surface;
-      auto complexPoint = [&](Index local) { return extracted.globalIds[local]; };
-      std::vector<char> moved(surface.triangles.size(), 0);
-      for (std::size_t i = 0; i < surface.triangles.size(); ++i)
-      {
-        for (Index v : surface.triangles[i])
+        if (!options.checksSubdomain || options.checksSubdomain(s))
         {
-          moved[i] = moved[i] || c.points[complexPoint(v)] != original[complexPoint(v)];
+          crossingMovedPoints(c, original, identity, s, back);
         }
       }
-      const std::vector<Index> near = trianglesNearMoved(surface, moved);
-      if (near.empty())
+    }
+    catch (const std::exception& e)
+    {
+      error = std::string("the check for crossings after relaxation failed: ") + e.what();
+      back = { kFailed };
+    }
+    if (options.unionOverProcesses)
+    {
+      const std::vector<Index> all = options.unionOverProcesses({ back.begin(), back.end() });
+      back = std::set<Index>(all.begin(), all.end());
+    }
+    if (back.count(kFailed))
+    {
+      if (error.empty())
       {
-        continue;
+        error = "the check for crossings after relaxation failed on another process";
       }
-      const SelfIntersectionReport report = checkSelfIntersection(surface, near, 64);
-      for (const auto& [f, g] : report.crossings)
-      {
-        for (Index i : { f, g })
-        {
-          for (Index v : surface.triangles[i])
-          {
-            if (c.points[complexPoint(v)] != original[complexPoint(v)])
-            {
-              back.insert(complexPoint(v));
-            }
-          }
-        }
-      }
+      return undone;
     }
     if (back.empty())
     {
@@ -1007,7 +1045,11 @@ RelaxationResult relaxSurfaceComplex(SurfaceComplex& c, const RelaxationOptions&
   result.before = triangleQuality(c);
   const SurfaceComplex before = c;
   Relaxer(c, options).run(result);
-  result.undoneMoves = undoCrossingMoves(c, before.points);
+  result.undoneMoves = undoCrossingMoves(c, before.points, options, result.error);
+  if (!result.error.empty())
+  {
+    return result;
+  }
   result.after = triangleQuality(c);
   result.change = surfaceChange(before, c);
   result.ok = true;

@@ -47,7 +47,9 @@
 // same complex gives the same result anywhere.
 #include "SurfaceComplex.h"
 
+#include <functional>
 #include <string>
+#include <vector>
 
 namespace ptm
 {
@@ -68,6 +70,14 @@ struct RelaxationOptions
   // SmoothSurface: farthest a node may move from its original position,
   // relative to the bounding-box diagonal (moves farther are rejected)
   double maximumSurfaceDeviation = 0.01;
+  // The check after relaxation that no subdomain crosses itself may be
+  // shared out among processes that all hold the same complex:
+  // checksSubdomain(s) says whether this process checks subdomain s, and
+  // unionOverProcesses(points) returns every process's points concatenated
+  // (a collective call: every process makes it once per round, the same
+  // number of rounds). Both empty (default): this process checks all.
+  std::function<bool(int)> checksSubdomain;
+  std::function<std::vector<Index>(const std::vector<Index>&)> unionOverProcesses;
 };
 
 struct TriangleQualityFigures
