@@ -920,7 +920,9 @@ void crossingMovedPoints(const SurfaceComplex& c, const std::vector<Vec3>& origi
 // subdomains and the points to put back are the union over processes, so
 // every process puts back the same points as one process checking all.
 // Returns the number of nodes put back; `error` is set (on every process)
-// where a check failed on any.
+// where a check failed on any. A process that comes with `error` already
+// set (its relaxation failed) still makes the collective calls, so the
+// others learn of it instead of waiting for it.
 std::size_t undoCrossingMoves(
   SurfaceComplex& c, const std::vector<Vec3>& original, const RelaxationOptions& options, std::string& error)
 {
@@ -941,7 +943,7 @@ std::size_t undoCrossingMoves(
     std::set<Index> back;
     try
     {
-      for (int s = 0; s < subdomains; ++s)
+      for (int s = 0; s < subdomains && error.empty(); ++s)
       {
         if (!options.checksSubdomain || options.checksSubdomain(s))
         {
@@ -952,6 +954,9 @@ std::size_t undoCrossingMoves(
     catch (const std::exception& e)
     {
       error = std::string("the check for crossings after relaxation failed: ") + e.what();
+    }
+    if (!error.empty())
+    {
       back = { kFailed };
     }
     if (options.unionOverProcesses)
@@ -1043,14 +1048,23 @@ RelaxationResult relaxSurfaceComplex(SurfaceComplex& c, const RelaxationOptions&
     return result;
   }
   result.before = triangleQuality(c);
-  const SurfaceComplex before = c;
-  Relaxer(c, options).run(result);
-  result.undoneMoves = undoCrossingMoves(c, before.points, options, result.error);
+  const std::vector<Vec3> original = c.points;
+  try
+  {
+    Relaxer(c, options).run(result);
+  }
+  catch (const std::exception& e)
+  {
+    result.error = std::string("relaxation failed: ") + e.what();
+  }
+  result.undoneMoves = undoCrossingMoves(c, original, options, result.error);
   if (!result.error.empty())
   {
     return result;
   }
   result.after = triangleQuality(c);
+  SurfaceComplex before = c;
+  before.points = original;
   result.change = surfaceChange(before, c);
   result.ok = true;
   return result;
