@@ -877,12 +877,13 @@ void crossingMovedPoints(const SurfaceComplex& c, const std::vector<Vec3>& origi
   }
   const TriangleSurface& surface = extracted.surface;
   auto complexPoint = [&](Index local) { return extracted.globalIds[local]; };
+  auto wasMoved = [&](Index local) { return c.points[complexPoint(local)] != original[complexPoint(local)]; };
   std::vector<char> moved(surface.triangles.size(), 0);
   for (std::size_t i = 0; i < surface.triangles.size(); ++i)
   {
     for (Index v : surface.triangles[i])
     {
-      moved[i] = moved[i] || c.points[complexPoint(v)] != original[complexPoint(v)];
+      moved[i] = moved[i] || wasMoved(v);
     }
   }
   const std::vector<Index> near = trianglesNearMoved(surface, moved);
@@ -897,7 +898,7 @@ void crossingMovedPoints(const SurfaceComplex& c, const std::vector<Vec3>& origi
     {
       for (Index v : surface.triangles[i])
       {
-        if (c.points[complexPoint(v)] != original[complexPoint(v)])
+        if (wasMoved(v))
         {
           back.insert(complexPoint(v));
         }
@@ -1048,7 +1049,7 @@ RelaxationResult relaxSurfaceComplex(SurfaceComplex& c, const RelaxationOptions&
     return result;
   }
   result.before = triangleQuality(c);
-  const std::vector<Vec3> original = c.points;
+  const SurfaceComplex before = c;
   try
   {
     Relaxer(c, options).run(result);
@@ -1057,14 +1058,12 @@ RelaxationResult relaxSurfaceComplex(SurfaceComplex& c, const RelaxationOptions&
   {
     result.error = std::string("relaxation failed: ") + e.what();
   }
-  result.undoneMoves = undoCrossingMoves(c, original, options, result.error);
+  result.undoneMoves = undoCrossingMoves(c, before.points, options, result.error);
   if (!result.error.empty())
   {
     return result;
   }
   result.after = triangleQuality(c);
-  SurfaceComplex before = c;
-  before.points = original;
   result.change = surfaceChange(before, c);
   result.ok = true;
   return result;
