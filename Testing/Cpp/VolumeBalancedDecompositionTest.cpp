@@ -183,6 +183,39 @@ TEST(VolumeBalancedDecomposition, UnitCubeCutExactlyThroughVerticesAndEdges)
   expectClosedSubdomains(rb.complex, "cube8");
 }
 
+TEST(VolumeBalancedDecomposition, ParallelSlabsThinnerThanTheSizeWarnWithTheLargestThickEnoughK)
+{
+  // a 4 x 1 x 1 box in slabs along x: K = 10 makes slabs 0.4 thick
+  const TriangleSurface bar = subdividedBox({ 0, 0, 0 }, { 4, 1, 1 }, 4);
+  DecompositionOptions options;
+  options.strategy = CutStrategy::ParallelPlanes;
+  options.direction = CutDirection::X;
+  options.numberOfSubdomains = 10;
+  options.costMaximumSize = 0.5;
+  auto thinSlabWarnings = [](const DecompositionResult& r) {
+    std::vector<std::string> found;
+    for (const std::string& w : r.warnings)
+    {
+      if (w.find("slabs as thin as") != std::string::npos)
+      {
+        found.push_back(w);
+      }
+    }
+    return found;
+  };
+  const DecompositionResult thin = decomposeVolumeBalanced(bar, options);
+  ASSERT_TRUE(thin.ok) << thin.error; // a warning, never a refusal
+  const auto warned = thinSlabWarnings(thin);
+  ASSERT_EQ(warned.size(), 1u);
+  EXPECT_NE(warned[0].find("as thin as 0.4, 0.8 x the mesh size 0.5"), std::string::npos) << warned[0];
+  EXPECT_NE(warned[0].find("at most 8 parallel slabs"), std::string::npos) << warned[0];
+  options.numberOfSubdomains = 8; // slabs 0.5 thick: as thick as the size
+  EXPECT_TRUE(thinSlabWarnings(decomposeVolumeBalanced(bar, options)).empty());
+  options.numberOfSubdomains = 10;
+  options.strategy = CutStrategy::RecursiveBisection; // parts are not slabs
+  EXPECT_TRUE(thinSlabWarnings(decomposeVolumeBalanced(bar, options)).empty());
+}
+
 TEST(VolumeBalancedDecomposition, TorusThroughItsHoleGivesTwoLoopsOnOnePlane)
 {
   DecompositionOptions options;
