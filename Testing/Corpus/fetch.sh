@@ -109,6 +109,15 @@ gmsh-thrusections|gmsh|$GD/doc/gmsh/demos/boolean/thrusections.geo|OCC loft
 gmsh-boolean|gmsh|$GD/doc/gmsh/demos/boolean/boolean.geo|OCC boolean demo
 gmsh-lever|stl|$GD/converters/stl_to_cartesian/lever.stl.gz|lever STL
 gmsh-object|stl|$GD/doc/gmsh/demos/api/object.stl.gz|object STL of the API demo
+occt-stl-propeller|stl|$OCC/stl/propeller.stl|propeller (OCCT's sample STL)
+occt-stl-sh1|stl|$OCC/stl/sh1.stl|sh1 (OCCT's sample STL)
+occt-stl-sh2|stl|$OCC/stl/sh2.stl|sh2 (OCCT's sample STL)
+occt-stl-shape|stl|$OCC/stl/shape.stl|shape (OCCT's sample STL)
+occt-stl-TR12J|stl|$OCC/stl/TR12J_OCC.stl|TR12J (OCCT's sample STL)
+occt-stl-bearing|stl|$OCC/stl/bearing.stl|bearing (OCCT's sample STL)
+occt-stl-video_part|stl|$OCC/stl/video_part.stl|video part (OCCT's sample STL)
+occt-stl-head|stl|$OCC/stl/head.stl|head (OCCT's sample STL)
+occt-stl-motor|stl|$OCC/stl/motor.stl|motor (OCCT's sample STL)
 "
 
 tar xzf "$CGAL_DATA" -C "$WORK" data/meshes
@@ -118,7 +127,7 @@ tessellate() {  # name kind source -> prints the raw file, or fails
     local name="$1" kind="$2" src="$3" raw
     case "$kind" in
         cgal) raw="$WORK/$src" ;;
-        stl) raw="$WORK/raw/$name.stl"; gzip -dc "$src" > "$raw" ;;
+        stl) raw="$WORK/raw/$name.stl"; gzip -dcf "$src" > "$raw" ;;
         scad)
             raw="$WORK/raw/$name.stl"
             (cd "$(dirname "$src")" && timeout 300 openscad -o "$raw" "$src") >"$WORK/raw/$name.log" 2>&1 ;;
