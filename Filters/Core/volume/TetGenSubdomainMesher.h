@@ -55,7 +55,15 @@ struct TetMeshingOptions
   // of volume meshing (TetGen split 8,555 triangles into 87,057 faces on one
   // subdomain and crashed in all six orders on two others), 28.0 to 30.3 %
   // under 10 degrees. The boundary is refined before TetGen instead
-  // (SurfaceRefinement.h).
+  // (SurfaceRefinement.h). Two more ways were measured on CGAL's pinion at
+  // K = 1 (0.33 degrees with -pY) and not kept: a second run with the outer
+  // triangles so marked, only where the first mesh has a tetrahedron under
+  // 5 degrees, ran over its 7 s limit (the first took 1 s); and the points
+  // of a -pq run without -Y (8.8 degrees) put back on the input triangles
+  // they came 2.6e-8 off (TetGen merged facets within 0.1 degrees) and the
+  // facets meshed again with them: 0.009 degrees, since its points ignore
+  // the edges between the facets it merged. Told not to merge (-M), TetGen
+  // -pq on that surface itself gives 0.0 degrees and 4.7 x the tetrahedra.
   std::vector<char> splittableTriangles;
   // per TetGen run, processor and wall time; 0: 2 s + 30 us of processor time
   // per expected tetrahedron (about 6x TetGen's speed), 60 s + 10 us of wall time
