@@ -134,6 +134,49 @@ ptm::DecompositionOptions decompositionOptions(vtkVolumeBalancedCutter* f, int r
   return options;
 }
 
+/// @name The cut checks shared among ranks
+/// @{
+// Every rank cuts the whole surface; the self-crossing checks of each cut
+// (most of the cutter's time on a ball at K = 64) are shared out: rank r
+// checks the parts numbered r modulo the ranks (DecompositionOptions::
+// checksPart; the two parts of a cut are numbered one after the other). Each
+// collective carries {the largest verdict, whether a rank is still cutting},
+// so that a rank that leaves the decomposition early (an exception) keeps
+// answering the others' checks until every rank has left it
+// (finishSharedCutChecks), and nobody waits.
+void shareCutChecks(vtkMultiProcessController* controller, int rank, ptm::DecompositionOptions& options)
+{
+  const int ranks = ptm::rankCount(controller);
+  if (ranks < 2)
+  {
+    return;
+  }
+  options.checksPart = [rank, ranks](int part) { return part % ranks == rank; };
+  options.maxOverProcesses = [controller](int verdict) {
+    std::vector<long long> v{ verdict, 1 };
+    ptm::allReduceMax(controller, v);
+    return static_cast<int>(v[0]);
+  };
+}
+
+void finishSharedCutChecks(vtkMultiProcessController* controller, bool failed)
+{
+  if (ptm::rankCount(controller) < 2)
+  {
+    return;
+  }
+  for (;;)
+  {
+    std::vector<long long> v{ failed ? ptm::kCheckFailed : 0, 0 };
+    ptm::allReduceMax(controller, v);
+    if (v[1] == 0)
+    {
+      return;
+    }
+  }
+}
+/// @}
+
 vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values)
 {
   auto a = vtkSmartPointer<vtkDoubleArray>::New();
@@ -268,8 +311,10 @@ int vtkVolumeBalancedCutter::RequestData(
   }
 
   run.Step(0.1, "Cutting");
-  const ptm::DecompositionOptions options = decompositionOptions(this, ptm::rankCount(controller), size);
+  ptm::DecompositionOptions options = decompositionOptions(this, ptm::rankCount(controller), size);
+  shareCutChecks(controller, run.Rank(), options);
   ptm::DecompositionResult result;
+  bool threw = false;
   try
   {
     if (surface.triangles.empty())
@@ -285,7 +330,9 @@ int vtkVolumeBalancedCutter::RequestData(
   catch (const std::exception& e)
   {
     localError = std::string("unexpected failure while cutting: ") + e.what();
+    threw = true;
   }
+  finishSharedCutChecks(controller, threw);
   std::vector<double> predicted;
   if (localError.empty())
   {

@@ -7,6 +7,11 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <thread>
+#include <stdexcept>
+#include <mutex>
+#include <functional>
+#include <condition_variable>
 #include <set>
 #include <sstream>
 
@@ -485,6 +490,137 @@ TEST(VolumeBalancedDecomposition, CoarseCadNeverCrossesItself)
     ASSERT_TRUE(r.ok) << "K=" << K << ": " << r.error;
     expectClosedSubdomains(r.complex, "example002");
     EXPECT_EQ(crossingSubdomains(r), 0) << "example002 K=" << K;
+  }
+}
+
+namespace
+{
+// Two threads as two processes: the largest of what both give, per round,
+// like the filter's all-reduce (vtkVolumeBalancedCutter.cxx).
+class TwoProcessMax
+{
+public:
+  std::vector<long long> reduce(int process, const std::vector<long long>& mine)
+  {
+    std::unique_lock<std::mutex> lock(this->Mutex);
+    const long generation = this->Generation;
+    this->Slots[process] = mine;
+    if (++this->Arrived == 2)
+    {
+      this->All = this->Slots[0];
+      for (std::size_t i = 0; i < this->All.size(); ++i)
+      {
+        this->All[i] = std::max(this->All[i], this->Slots[1][i]);
+      }
+      this->Arrived = 0;
+      ++this->Generation;
+      this->Changed.notify_all();
+      return this->All;
+    }
+    this->Changed.wait(lock, [&] { return this->Generation != generation; });
+    return this->All;
+  }
+
+private:
+  std::mutex Mutex;
+  std::condition_variable Changed;
+  std::vector<long long> Slots[2];
+  std::vector<long long> All;
+  int Arrived = 0;
+  long Generation = 0;
+};
+
+struct SharedRun
+{
+  DecompositionResult result;
+  std::string thrown;
+  int checks = 0;
+};
+
+// Decomposes `surface` as processes 0 and 1 sharing the cut checks, and
+// then, as the filter does, keeps answering until both have left.
+void decomposeAsTwoProcesses(const TriangleSurface& surface, const DecompositionOptions& options, SharedRun runs[2],
+  const std::function<bool(int process, int part)>& checks)
+{
+  TwoProcessMax exchange;
+  std::vector<std::thread> processes;
+  for (int p = 0; p < 2; ++p)
+  {
+    processes.emplace_back([&, p] {
+      DecompositionOptions o = options;
+      o.checksPart = [&, p](int part) {
+        const bool mine = checks(p, part);
+        runs[p].checks += mine ? 1 : 0;
+        return mine;
+      };
+      o.maxOverProcesses = [&, p](int verdict) { return static_cast<int>(exchange.reduce(p, { verdict, 1 })[0]); };
+      try
+      {
+        runs[p].result = decomposeVolumeBalanced(surface, o);
+      }
+      catch (const std::exception& e)
+      {
+        runs[p].thrown = e.what();
+      }
+      while (exchange.reduce(p, { runs[p].thrown.empty() ? 0 : kCheckFailed, 0 })[1] != 0)
+      {
+      }
+    });
+  }
+  for (std::thread& t : processes)
+  {
+    t.join();
+  }
+}
+} // namespace
+
+// The cut checks shared out between two processes (each the parts of its
+// parity) give both the one-process decomposition, bit for bit, on
+// surfaces where cuts are refused for crossing; a check throwing on one
+// process makes both throw, neither waiting for ever.
+TEST(VolumeBalancedDecompositionShared, TwoProcessesGiveTheOneProcessResult)
+{
+  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/openscad_example002.off");
+  ASSERT_TRUE(file.ok) << file.error;
+  for (CutStrategy strategy : { CutStrategy::RecursiveBisection, CutStrategy::ParallelPlanes })
+  {
+    DecompositionOptions options;
+    options.numberOfSubdomains = 12;
+    options.strategy = strategy;
+    const DecompositionResult one = decomposeVolumeBalanced(file.data.surface, options);
+    ASSERT_TRUE(one.ok) << one.error;
+    SharedRun two[2];
+    decomposeAsTwoProcesses(file.data.surface, options, two, [](int p, int part) { return part % 2 == p; });
+    for (const SharedRun& r : two)
+    {
+      ASSERT_TRUE(r.thrown.empty()) << r.thrown;
+      ASSERT_TRUE(r.result.ok) << r.result.error;
+      EXPECT_EQ(r.result.complex.points, one.complex.points) << toString(strategy);
+      EXPECT_EQ(r.result.complex.triangles, one.complex.triangles) << toString(strategy);
+      EXPECT_EQ(r.result.complex.trianglePairs, one.complex.trianglePairs) << toString(strategy);
+      EXPECT_EQ(r.result.rejectedCuts, one.rejectedCuts) << toString(strategy);
+    }
+    EXPECT_GT(two[0].checks, 0);
+    EXPECT_GT(two[1].checks, 0);
+
+    // process 0 checks nothing: every verdict it acts on comes from process 1
+    SharedRun lopsided[2];
+    decomposeAsTwoProcesses(file.data.surface, options, lopsided, [](int p, int) { return p == 1; });
+    ASSERT_TRUE(lopsided[0].result.ok) << lopsided[0].result.error << lopsided[0].thrown;
+    EXPECT_EQ(lopsided[0].checks, 0);
+    EXPECT_EQ(lopsided[0].result.complex.points, one.complex.points) << toString(strategy);
+    EXPECT_EQ(lopsided[0].result.complex.trianglePairs, one.complex.trianglePairs) << toString(strategy);
+
+    SharedRun failing[2];
+    decomposeAsTwoProcesses(file.data.surface, options, failing, [](int p, int part) -> bool {
+      if (p == 1 && part % 2 == 1)
+      {
+        throw std::runtime_error("injected");
+      }
+      return part % 2 == p;
+    });
+    EXPECT_NE(failing[0].thrown.find("on another process"), std::string::npos) << failing[0].thrown;
+    EXPECT_NE(failing[1].thrown.find("injected"), std::string::npos) << failing[1].thrown;
   }
 }
 

@@ -9,6 +9,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <unordered_map>
 
 namespace ptm
@@ -502,6 +503,7 @@ struct PartCut
   Trial balancedCut(const Vec3& n, double& at, bool& tooThin);
   bool interfacesValid(const Trial& trial) const;
   bool soundParts(const Trial& trial) const;
+  bool anyPartCrosses(const SurfaceComplex& trialComplex, const std::set<int>& parts, const Box& cutBox) const;
   Trial soundCutInstead(Trial&& unsound, const Vec3& proposed);
   bool cutAlongEarlierLine(const NearlyContinuedLine& continued, const Vec3& normal,
     const Vec3& proposedNormal, double bestOffset, Trial& best);
@@ -872,14 +874,44 @@ bool PartCut::soundParts(const Trial& trial) const
       }
     }
   }
-  for (int part : parts)
+  return !anyPartCrosses(trial.complex, parts, cutBox);
+}
+
+// Whether one of `parts` crosses itself (partCrossesItself), with the checks
+// shared among processes where options.checksPart is set (see there).
+bool PartCut::anyPartCrosses(const SurfaceComplex& trialComplex, const std::set<int>& parts, const Box& cutBox) const
+{
+  int found = 0;
+  std::string why;
+  try
   {
-    if (partCrossesItself(trial.complex, part, cutBox, below, above))
+    for (auto it = parts.begin(); it != parts.end() && found == 0; ++it)
     {
-      return false;
+      if ((!options.checksPart || options.checksPart(*it)) && partCrossesItself(trialComplex, *it, cutBox, below, above))
+      {
+        found = 1;
+      }
     }
   }
-  return true;
+  catch (const std::exception& e)
+  {
+    if (!options.maxOverProcesses)
+    {
+      throw;
+    }
+    found = kCheckFailed; // still joins the collective, so no process waits for this one
+    why = e.what();
+  }
+  if (options.maxOverProcesses)
+  {
+    found = options.maxOverProcesses(found);
+  }
+  if (found >= kCheckFailed)
+  {
+    throw std::runtime_error("the check that a cut's parts do not cross themselves failed" +
+      (why.empty() ? std::string(" on another process") : ": " + why));
+  }
+  return found == 1;
 }
 
 // A cut whose parts cross themselves is never shipped. Seen only where

@@ -19,6 +19,7 @@
 #include "SurfaceInputCheck.h"
 #include "SurfaceOrientation.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -55,7 +56,21 @@ struct DecompositionOptions
   SizeFunction costSize;
   double costMaximumSize = 0;
   std::size_t costSamples = 1000000;
+  // Sharing the self-crossing checks of each cut among processes that all
+  // run this same decomposition (every rank cuts the whole surface): of the
+  // parts a cut changed, part p (its number among the parts made so far, the
+  // same on every process) is checked by the process for which
+  // checksPart(p) is true, and maxOverProcesses(v) returns the largest
+  // v any process gave (0: none of its parts crosses itself, 1: one does,
+  // kCheckFailed: its check threw). So every process takes the cut one
+  // process would. A process that gets kCheckFailed throws. Both empty: one
+  // process checks every part.
+  std::function<bool(int)> checksPart;
+  std::function<int(int)> maxOverProcesses;
 };
+
+// What a process gives maxOverProcesses when its check threw.
+constexpr int kCheckFailed = 2;
 
 struct DecompositionResult
 {
