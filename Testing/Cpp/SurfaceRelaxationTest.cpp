@@ -25,6 +25,7 @@
 #include "OffFormat.h"
 #include "SurfaceRelaxation.h"
 #include "TestSurfaces.h"
+#include "TwoThreadExchange.h"
 #include "VolumeBalancedDecomposition.h"
 
 #include <CGAL/AABB_traits.h>
@@ -35,9 +36,7 @@
 
 #include <algorithm>
 #include <atomic>
-#include <condition_variable>
 #include <functional>
-#include <mutex>
 #include <stdexcept>
 #include <thread>
 #include <cmath>
@@ -480,45 +479,17 @@ TEST(SurfaceRelaxationOptions, DeviationBoundAndBadMode)
 
 namespace
 {
-// Two processes of one relaxation, as vtkSurfaceRelaxer runs them on two
-// ranks: threads that swap their points through this, a collective call
-// both make once per round.
-class TwoProcessUnion
-{
-public:
-  std::vector<Index> swap(int process, const std::vector<Index>& mine)
-  {
-    std::unique_lock<std::mutex> lock(this->Mutex);
-    const long generation = this->Generation;
-    this->Slots[process] = mine;
-    if (++this->Arrived == 2)
-    {
-      this->All = this->Slots[0];
-      this->All.insert(this->All.end(), this->Slots[1].begin(), this->Slots[1].end());
-      this->Arrived = 0;
-      ++this->Generation;
-      this->Changed.notify_all();
-      return this->All;
-    }
-    this->Changed.wait(lock, [&] { return this->Generation != generation; });
-    return this->All;
-  }
-
-private:
-  std::mutex Mutex;
-  std::condition_variable Changed;
-  std::vector<Index> Slots[2];
-  std::vector<Index> All;
-  int Arrived = 0;
-  long Generation = 0;
-};
-
 // Relaxes `a` and `b` (copies of one complex) as processes 0 and 1, each
 // checking the subdomains `checks` gives it; counts the checks made.
 void relaxAsTwoProcesses(SurfaceComplex& a, SurfaceComplex& b, RelaxationResult results[2],
   const std::function<bool(int process, int subdomain)>& checks)
 {
-  TwoProcessUnion exchange;
+  // as vtkSurfaceRelaxer's all-gather: both processes' points, concatenated
+  TwoThreadExchange<std::vector<Index>> exchange([](const std::vector<Index>& x, const std::vector<Index>& y) {
+    std::vector<Index> all = x;
+    all.insert(all.end(), y.begin(), y.end());
+    return all;
+  });
   SurfaceComplex* complexes[2] = { &a, &b };
   std::vector<std::thread> processes;
   for (int p = 0; p < 2; ++p)
@@ -526,7 +497,7 @@ void relaxAsTwoProcesses(SurfaceComplex& a, SurfaceComplex& b, RelaxationResult 
     processes.emplace_back([&, p] {
       RelaxationOptions o;
       o.checksSubdomain = [&, p](int s) { return checks(p, s); };
-      o.unionOverProcesses = [&, p](const std::vector<Index>& points) { return exchange.swap(p, points); };
+      o.unionOverProcesses = [&, p](const std::vector<Index>& points) { return exchange.exchange(p, points); };
       results[p] = relaxSurfaceComplex(*complexes[p], o);
     });
   }

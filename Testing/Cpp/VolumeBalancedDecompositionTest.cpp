@@ -2,16 +2,16 @@
 #include "SelfIntersectionCheck.h"
 #include "SubdomainAssignment.h"
 #include "TestSurfaces.h"
+#include "TwoThreadExchange.h"
 #include "VolumeBalancedDecomposition.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <thread>
 #include <stdexcept>
-#include <mutex>
 #include <functional>
-#include <condition_variable>
 #include <set>
 #include <sstream>
 
@@ -495,41 +495,6 @@ TEST(VolumeBalancedDecomposition, CoarseCadNeverCrossesItself)
 
 namespace
 {
-// Two threads as two processes: the largest of what both give, per round,
-// like the filter's all-reduce (vtkVolumeBalancedCutter.cxx).
-class TwoProcessMax
-{
-public:
-  std::vector<long long> reduce(int process, const std::vector<long long>& mine)
-  {
-    std::unique_lock<std::mutex> lock(this->Mutex);
-    const long generation = this->Generation;
-    this->Slots[process] = mine;
-    if (++this->Arrived == 2)
-    {
-      this->All = this->Slots[0];
-      for (std::size_t i = 0; i < this->All.size(); ++i)
-      {
-        this->All[i] = std::max(this->All[i], this->Slots[1][i]);
-      }
-      this->Arrived = 0;
-      ++this->Generation;
-      this->Changed.notify_all();
-      return this->All;
-    }
-    this->Changed.wait(lock, [&] { return this->Generation != generation; });
-    return this->All;
-  }
-
-private:
-  std::mutex Mutex;
-  std::condition_variable Changed;
-  std::vector<long long> Slots[2];
-  std::vector<long long> All;
-  int Arrived = 0;
-  long Generation = 0;
-};
-
 struct SharedRun
 {
   DecompositionResult result;
@@ -542,7 +507,16 @@ struct SharedRun
 void decomposeAsTwoProcesses(const TriangleSurface& surface, const DecompositionOptions& options, SharedRun runs[2],
   const std::function<bool(int process, int part)>& checks)
 {
-  TwoProcessMax exchange;
+  // as vtkVolumeBalancedCutter's all-reduce: the largest of each entry
+  TwoThreadExchange<std::vector<long long>> exchange(
+    [](const std::vector<long long>& x, const std::vector<long long>& y) {
+      std::vector<long long> largest = x;
+      for (std::size_t i = 0; i < largest.size(); ++i)
+      {
+        largest[i] = std::max(largest[i], y[i]);
+      }
+      return largest;
+    });
   std::vector<std::thread> processes;
   for (int p = 0; p < 2; ++p)
   {
@@ -553,7 +527,7 @@ void decomposeAsTwoProcesses(const TriangleSurface& surface, const Decomposition
         runs[p].checks += mine ? 1 : 0;
         return mine;
       };
-      o.maxOverProcesses = [&, p](int verdict) { return static_cast<int>(exchange.reduce(p, { verdict, 1 })[0]); };
+      o.maxOverProcesses = [&, p](int verdict) { return static_cast<int>(exchange.exchange(p, { verdict, 1 })[0]); };
       try
       {
         runs[p].result = decomposeVolumeBalanced(surface, o);
@@ -562,7 +536,7 @@ void decomposeAsTwoProcesses(const TriangleSurface& surface, const Decomposition
       {
         runs[p].thrown = e.what();
       }
-      while (exchange.reduce(p, { runs[p].thrown.empty() ? 0 : kCheckFailed, 0 })[1] != 0)
+      while (exchange.exchange(p, { runs[p].thrown.empty() ? 0 : kCheckFailed, 0 })[1] != 0)
       {
       }
     });
