@@ -1189,8 +1189,8 @@ bool Cutting::cut(int cell, const Vec3& proposedNormal, double fraction, int par
 /// @{
 // Parallel planes make K slabs whatever the object's extent along their
 // normal. At K = 64 on the corpus at its sizes (serial TetGen making 50,000
-// to 100,000 tetrahedra) the thinnest slab is 0.08 to 0.49 x the size on 28
-// of 32 surfaces (0.44 to 1.0 x at K = 32). Such a slab is meshed much
+// to 100,000 tetrahedra) the thinnest slab is 0.08 to 0.50 x the size on
+// all 32 surfaces measured (0.32 to 1.0 x at K = 32). Such a slab is meshed much
 // finer than asked between two interfaces crossing the same input
 // triangles: CGAL's oblong at K = 64 (0.22 x) made 17 x serial TetGen's
 // tetrahedra, and CGAL's pinion at K = 48 (0.30 x; 1.03 M interface
