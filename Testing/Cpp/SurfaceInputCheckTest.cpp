@@ -86,6 +86,28 @@ TEST(SurfaceInputCheck, NanInfiniteAndBadIndicesAreNamedTogether)
   EXPECT_TRUE(mentions(p.error, "1 triangle refers to a point that does not exist (the first is triangle 4)"));
 }
 
+// The decomposition fuzzer's case: 22 triangles 3e-106 across took 36 s to
+// cut, every predicate falling back to exact arithmetic. Far smaller than
+// any model, yet 1e-40 across still passes.
+TEST(SurfaceInputCheck, SurfaceTooSmallForThePredicatesIsRefused)
+{
+  const TriangleSurface ball = icosphere({ 0, 0, 0 }, 1.0, 1);
+  auto scaled = [&](double s) {
+    TriangleSurface t = ball;
+    for (Vec3& p : t.points)
+    {
+      p = s * p;
+    }
+    return t;
+  };
+  const PreparedSurface tiny = prepareInputSurface(scaled(1e-106), {});
+  EXPECT_FALSE(tiny.ok);
+  EXPECT_TRUE(mentions(tiny.error, "below the 1e-50 at which")) << tiny.error;
+  EXPECT_TRUE(mentions(tiny.error, "scale the surface up")) << tiny.error;
+  const PreparedSurface small = prepareInputSurface(scaled(1e-40), {});
+  EXPECT_TRUE(small.ok) << small.error;
+}
+
 TEST(SurfaceInputCheck, OpenBoxNamesItsBoundaryEdges)
 {
   TriangleSurface box = subdividedBox({ 0, 0, 0 }, { 1, 1, 1 }, 2);

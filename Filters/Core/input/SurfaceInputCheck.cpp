@@ -201,6 +201,24 @@ void InputPreparation::checkPoints()
         << ", beyond the 1e100 that volumes in double precision allow; scale the surface down";
     problems.push_back(msg.str());
   }
+  // At the other end, the products inside the exact predicates (up to the
+  // fifth power of a length in TetGen's insphere) underflow: CGAL then
+  // falls back to exact arithmetic on every call, and a surface of 22
+  // triangles 3e-106 across took 36 s to cut into 4 (found by the
+  // decomposition fuzzer), where the same at unit size takes milliseconds.
+  constexpr double kSmallestExtent = 1e-50;
+  if (n.nonFinitePoints == 0)
+  {
+    const double extent = boundingBoxDiagonal(input.points);
+    if (extent > 0 && extent < kSmallestExtent)
+    {
+      std::ostringstream msg;
+      msg << "the surface spans only " << extent
+          << " (its bounding-box diagonal), below the 1e-50 at which the exact predicates' products "
+             "underflow double precision; scale the surface up";
+      problems.push_back(msg.str());
+    }
+  }
 }
 
 void InputPreparation::checkTriangleIndices()

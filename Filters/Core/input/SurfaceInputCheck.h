@@ -15,7 +15,9 @@
 //                         shells (orientation propagation, nesting);
 //   refused (the error):  empty input, fewer than 4 points, NaN or infinite
 //                         coordinates, coordinates beyond 1e100 (volumes
-//                         would overflow), indices out of range, boundary edges
+//                         would overflow), a bounding-box diagonal under
+//                         1e-50 (the predicates' products would underflow),
+//                         indices out of range, boundary edges
 //                         (open surface), non-manifold edges and vertices,
 //                         self-intersections (CGAL, exact predicates; checked
 //                         when the surface has at most `selfIntersectionLimit`
