@@ -1100,11 +1100,17 @@ bool cutsByCost(const DecompositionOptions& options)
   return options.criterion == BalanceCriterion::PredictedCost && static_cast<bool>(options.costSize);
 }
 
+// The mesher's largest size: costMaximumSize, or (0) its automatic size,
+// the input's mean edge.
+double largestMeshSize(const DecompositionOptions& options, const DecompositionResult& result)
+{
+  return options.costMaximumSize > 0 ? options.costMaximumSize : result.inputMeanEdgeLength;
+}
+
 // The field whose cost is balanced: no larger than the mesher's largest size.
 SizeFunction costField(const DecompositionOptions& options, const DecompositionResult& result)
 {
-  return cappedSize(
-    options.costSize, options.costMaximumSize > 0 ? options.costMaximumSize : result.inputMeanEdgeLength);
+  return cappedSize(options.costSize, largestMeshSize(options, result));
 }
 
 // The complex of the whole checked surface, all of it part 0; false (with
@@ -1219,9 +1225,8 @@ void warnOfThinSlabs(const SurfaceComplex& c, const Vec3& normal, const Decompos
   DecompositionResult& result)
 {
   const int K = options.numberOfSubdomains;
-  const double size = options.costMaximumSize > 0 ? options.costMaximumSize : result.inputMeanEdgeLength;
-  const BalanceCriterion criterion =
-    options.criterion == BalanceCriterion::PredictedCost ? BalanceCriterion::Volume : options.criterion;
+  const double size = largestMeshSize(options, result);
+  const BalanceCriterion criterion = options.criterion; // HalfSpaceMeasure takes PredictedCost as Volume
   const double thinnest = thinnestSlab(c, normal, criterion, K);
   const double thickEnough = (1 - 1e-9) * size; // the offsets are found to a tolerance
   if (!(size > 0) || thinnest >= thickEnough)
