@@ -1,6 +1,8 @@
+#include "BoundarySliverRepair.h"
 #include "OffFormat.h"
 #include "TestSurfaces.h"
 #include "TetGenSubdomainMesher.h"
+#include "TetrahedronQuality.h"
 
 #include <gtest/gtest.h>
 
@@ -292,6 +294,66 @@ TEST(TetGenSubdomainMesher, AbortWhenRefiningIsMeshedInTwoRuns)
   const TetMeshingResult sized = meshClosedSurface(surface, options);
   EXPECT_TRUE(sized.recoveredThenRefined);
   expectConformingMesh(surface, sized, "recovered, then refined with a size field");
+}
+
+TEST(TetGenSubdomainMesher, FlatTetrahedraOnTheSurfaceAreRepairedInCavities)
+{
+  // TetGen -pYq leaves a tetrahedron of 0.22 degrees with two faces on this
+  // subdomain surface (fandisk at K = 16); the repair meshes the tetrahedra
+  // around it again with a point inside and keeps the better mesh: the
+  // surface exactly as before, a larger smallest angle, no more
+  // tetrahedra under 10 degrees, the same mesh every time
+  const TriangleSurface surface = regressionSurface("tetgen_leaves_an_ear.off");
+  TetMeshingOptions options = boundedOptions(std::pow(0.03988, 3) / (6 * std::sqrt(2.0)));
+  options.sliverRepairAngle = 0;
+  const TetMeshingResult plain = meshClosedSurface(surface, options);
+  expectConformingMesh(surface, plain, "without the repair");
+  EXPECT_EQ(plain.sliverRepairPoints, 0);
+  const DihedralQuality before = dihedralQuality(plain.mesh);
+  EXPECT_LT(before.minimumDihedralDegrees, 1.0);
+  // the flat tetrahedra the repair works on: on the surface, under 5 degrees
+  const std::vector<BoundarySliverPoint> points = boundarySliverPoints(surface, plain.mesh, 5.0);
+  ASSERT_FALSE(points.empty());
+
+  options.sliverRepairAngle = 5;
+  const TetMeshingResult repaired = meshClosedSurface(surface, options);
+  expectConformingMesh(surface, repaired, "with the repair");
+  EXPECT_GT(repaired.sliverRepairPoints, 0);
+  const DihedralQuality after = dihedralQuality(repaired.mesh);
+  EXPECT_GT(after.minimumDihedralDegrees, 2.0);
+  EXPECT_LE(after.below10Degrees, before.below10Degrees);
+  const TetMeshingResult again = meshClosedSurface(surface, options);
+  ASSERT_TRUE(again.ok) << again.error;
+  EXPECT_EQ(repaired.mesh.points, again.mesh.points);
+  EXPECT_EQ(repaired.mesh.tets, again.mesh.tets);
+}
+
+TEST(TetGenSubdomainMesher, SliverPointsLieInsideAboveTheirTetrahedron)
+{
+  // an ear: two surface triangles of a square folded by 2 degrees, closed
+  // by a roof far above; the point goes inside, half the mean edge up
+  const double fold = 2.0 * kPi / 180.0;
+  TriangleSurface s;
+  s.points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0.5, 0.5, 0 }, { 0.5, -0.5, std::sin(fold) * 0.5 }, { 0.5, 0, 3 } };
+  s.triangles = { { 0, 2, 1 }, { 0, 1, 3 }, { 0, 4, 2 }, { 2, 4, 1 }, { 1, 4, 3 }, { 3, 4, 0 } };
+  TetMesh mesh;
+  mesh.points = s.points;
+  mesh.tets = { { 0, 1, 2, 3 } };
+  // orient the tetrahedron positively
+  const Vec3& a = mesh.points[0];
+  if (dot(mesh.points[1] - a, cross(mesh.points[2] - a, mesh.points[3] - a)) < 0)
+  {
+    std::swap(mesh.tets[0][2], mesh.tets[0][3]);
+  }
+  const std::vector<BoundarySliverPoint> points = boundarySliverPoints(s, mesh, 5.0);
+  ASSERT_EQ(points.size(), 1u);
+  EXPECT_EQ(points[0].tetrahedron, 0);
+  EXPECT_GT(points[0].point[2], 0.2); // up, towards the roof
+  // no point for a tetrahedron above the bound, or for one with a tiny edge
+  EXPECT_TRUE(boundarySliverPoints(s, mesh, 1.0).empty());
+  mesh.points[3] = { 0.99, -0.01, std::sin(fold) * 0.01 }; // 0.014 from point 1
+  ASSERT_LT(smallestDihedralDegrees(mesh.points[0], mesh.points[1], mesh.points[2], mesh.points[3]), 5.0);
+  EXPECT_TRUE(boundarySliverPoints(s, mesh, 5.0).empty());
 }
 
 TEST(TetGenSubdomainMesher, SplittableTrianglesMayBeSplitOthersNot)

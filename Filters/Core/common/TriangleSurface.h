@@ -4,6 +4,7 @@
 // filters and the geometry core.
 #include "Vec3.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -18,6 +19,13 @@ using UndirectedEdge = std::array<Index, 2>;
 inline UndirectedEdge undirected(Index a, Index b)
 {
   return a < b ? UndirectedEdge{ a, b } : UndirectedEdge{ b, a };
+}
+
+// A triangle with its corners sorted: the key of a face whichever way it runs.
+inline Triangle sortedCorners(Triangle t)
+{
+  std::sort(t.begin(), t.end());
+  return t;
 }
 
 struct TriangleSurface

@@ -1,6 +1,8 @@
 #include "TetGenSubdomainMesher.h"
 
+#include "BoundarySliverRepair.h"
 #include "SelfIntersectionCheck.h"
+#include "TetrahedronQuality.h"
 
 #include <tetgen.h>
 
@@ -226,7 +228,7 @@ bool waitReadable(int fd, double seconds)
 // is killed; both set timedOut.
 bool runTetGenIsolated(tetgenio& in, const std::string& switches, double cpuSeconds,
   double wallSeconds, std::vector<double>& points, std::vector<int>& tets, int& status, int& code,
-  bool& timedOut, std::string& error)
+  bool& timedOut, std::string& error, tetgenio* addin = nullptr)
 {
   timedOut = false;
   int fds[2];
@@ -267,7 +269,7 @@ bool runTetGenIsolated(tetgenio& in, const std::string& switches, double cpuSeco
       }
       else
       {
-        tetrahedralize(&behaviour, &in, &out);
+        tetrahedralize(&behaviour, &in, &out, addin);
       }
     }
     catch (int c)
@@ -417,6 +419,18 @@ void fillTetGenInput(const TriangleSurface& s, const std::vector<Index>& order,
     }
   }
 }
+// TetGen's added points (-i): TetMeshingOptions::insidePoints.
+void fillInsidePoints(const std::vector<Vec3>& points, tetgenio& addin)
+{
+  addin.firstnumber = 0;
+  addin.numberofpoints = static_cast<int>(points.size());
+  addin.pointlist = points.empty() ? nullptr : new REAL[3 * points.size()];
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    std::copy(points[i].begin(), points[i].end(), &addin.pointlist[3 * i]);
+  }
+}
+
 // Why TetGen must not be given this surface with these options, before
 // anything is run; empty if it may. Sets meanEdge, the mean length of the
 // triangles' edges.
@@ -530,7 +544,7 @@ std::string tetgenSwitches(const TetMeshingOptions& options, double volume, char
 {
   std::ostringstream switches;
   switches.precision(17);
-  switches << mode << "YzQ" << (options.pointSizes.empty() ? "" : "m");
+  switches << mode << "YzQ" << (options.pointSizes.empty() ? "" : "m") << (options.insidePoints.empty() ? "" : "i");
   if (options.qualityRefinement)
   {
     switches << "q" << options.radiusEdgeRatio;
@@ -643,13 +657,15 @@ TetGenRuns runInOrders(const TriangleSurface& s, const TetMeshingOptions& option
     }
     tetgenio in;
     fillTetGenInput(s, runs.order, position, facets, holes, options.pointSizes, in);
+    tetgenio addin;
+    fillInsidePoints(options.insidePoints, addin);
     runs.points.clear();
     runs.tets.clear();
     runs.failure.clear();
     runs.status = runs.code = 0;
     bool timedOut = false;
     const bool ran = runTetGenIsolated(in, switches, limits.cpu, limits.wall, runs.points, runs.tets, runs.status,
-      runs.code, timedOut, runs.failure);
+      runs.code, timedOut, runs.failure, options.insidePoints.empty() ? nullptr : &addin);
     meshed = ran && runs.status == 0;
     runs.attempts = attempt + 1;
     const bool retry = !ran || (runs.status == 1 && runs.code == 2);
@@ -868,7 +884,9 @@ TetGenRuns recoverThenRefine(const TriangleSurface& s, const TetMeshingOptions& 
   std::iota(second.order.begin(), second.order.end(), Index{ 0 });
   second.attempts = 1;
   bool timedOut = false;
-  runTetGenIsolated(in, tetgenSwitches(options, volume, 'r') + first.tolerance, limits.cpu, limits.wall, second.points,
+  TetMeshingOptions refineOnly = options;
+  refineOnly.insidePoints.clear(); // -i would need them again (the first run inserted them)
+  runTetGenIsolated(in, tetgenSwitches(refineOnly, volume, 'r') + first.tolerance, limits.cpu, limits.wall, second.points,
     second.tets, second.status, second.code, timedOut, second.failure);
   return second;
 }
@@ -941,13 +959,6 @@ std::vector<std::array<Index, 3>> convertMesh(
   return faces;
 }
 
-Triangle sortedKey(const Triangle& t)
-{
-  Triangle key = t;
-  std::sort(key.begin(), key.end());
-  return key;
-}
-
 bool contains(const std::vector<Triangle>& sorted, const Triangle& key)
 {
   return std::binary_search(sorted.begin(), sorted.end(), key);
@@ -985,7 +996,7 @@ std::vector<Triangle> outwardFaces(const TetMesh& mesh, const std::vector<Triang
       { t[0], t[2], t[1] } };
     for (const Triangle& f : outward)
     {
-      if (contains(keys, sortedKey(f)))
+      if (contains(keys, sortedCorners(f)))
       {
         faces.push_back(f);
       }
@@ -1028,7 +1039,7 @@ bool acceptSplitFaces(const TriangleSurface& s, const std::vector<char>& splitta
   double missingArea = 0, newArea = 0;
   for (std::size_t t = 0; t < s.triangles.size(); ++t)
   {
-    if (contains(boundary, sortedKey(s.triangles[t])))
+    if (contains(boundary, sortedCorners(s.triangles[t])))
     {
       continue;
     }
@@ -1086,7 +1097,7 @@ std::string boundaryError(const TriangleSurface& s, const std::vector<char>& spl
   std::vector<Triangle> input;
   for (const auto& t : s.triangles)
   {
-    input.push_back(sortedKey(t));
+    input.push_back(sortedCorners(t));
   }
   std::sort(input.begin(), input.end());
   if (boundary == input)
@@ -1133,6 +1144,31 @@ std::string volumeError(const TriangleSurface& s, const TetMesh& mesh)
   }
   return {};
 }
+// The mesh of TetGen's runs (in the surface's order) checked against the
+// contract: every surface point kept, the boundary the surface (or split
+// splittable triangles), the filled volume the enclosed one. Fills r.mesh
+// and its split faces; returns why the mesh breaks the contract (empty: it
+// does not).
+std::string meshError(
+  const TriangleSurface& s, const std::vector<char>& splittable, const TetGenRuns& runs, TetMeshingResult& r)
+{
+  std::string error = surfacePointsError(s, runs.points);
+  if (!error.empty())
+  {
+    return error;
+  }
+  std::vector<std::array<Index, 3>> faces = convertMesh(runs.points, runs.tets, r.mesh, error);
+  if (error.empty())
+  {
+    error = boundaryError(s, splittable, faces, r);
+  }
+  if (error.empty())
+  {
+    error = volumeError(s, r.mesh);
+  }
+  return error;
+}
+
 } // namespace
 
 std::string describeTetGenError(int code)
@@ -1160,7 +1196,7 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
   }
   const double volume =
     options.maximumVolume > 0 ? options.maximumVolume : meanEdge * meanEdge * meanEdge / (6.0 * std::sqrt(2.0));
-  r.error = selfIntersectionError(s);
+  r.error = options.surfaceKnownValid ? std::string() : selfIntersectionError(s);
   if (!r.error.empty())
   {
     r.tetgenCode = 3;
@@ -1197,25 +1233,18 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
   {
     restoreSurfaceOrder(runs, s.points.size());
   }
-  r.error = surfacePointsError(s, runs.points);
-  if (!r.error.empty())
-  {
-    return r;
-  }
-  std::vector<std::array<Index, 3>> faces = convertMesh(runs.points, runs.tets, r.mesh, r.error);
-  if (r.error.empty())
-  {
-    r.error = boundaryError(s, options.splittableTriangles, faces, r);
-  }
-  if (r.error.empty())
-  {
-    r.error = volumeError(s, r.mesh);
-  }
+  r.error = meshError(s, options.splittableTriangles, runs, r);
   if (!r.error.empty())
   {
     return r;
   }
   r.ok = true;
+  if (r.splitTriangles.empty())
+  {
+    TetMeshingOptions resolved = options;
+    resolved.maximumVolume = volume;
+    r.sliverRepairPoints = repairBoundarySlivers(s, resolved, r.mesh).pointsInserted;
+  }
   return r;
 }
 TetMeshEstimate estimateTetMesh(double volume, double maximumVolume)

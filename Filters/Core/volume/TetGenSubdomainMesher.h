@@ -73,6 +73,18 @@ struct TetMeshingOptions
   // and facets shuffled (fixed seeds, so the same mesh on any rank). Fewer
   // orders fail sooner on a surface TetGen cannot mesh.
   int inputOrders = kInputOrders;
+  // Flat tetrahedra left on the surface: where the mesh has a tetrahedron
+  // with a face on the surface and a dihedral angle under this many degrees,
+  // the tetrahedra around it are meshed again with a point inside above it
+  // (BoundarySliverRepair.h), kept if better. 0: never.
+  double sliverRepairAngle = 5.0;
+  // points TetGen inserts inside the surface first (-i; points outside are
+  // passed over). Empty: none.
+  std::vector<Vec3> insidePoints;
+  // true: the surface is known not to cross itself (faces of a valid mesh,
+  // as the sliver repair's cavities), so CGAL's check before TetGen is not
+  // made
+  bool surfaceKnownValid = false;
 };
 
 struct TetMesh
@@ -92,6 +104,9 @@ struct TetMeshingResult
   // true if TetGen crashed or stalled meshing and refining in one run, and
   // the mesh comes from two: the surface recovered (-pY), then refined (-rY)
   bool recoveredThenRefined = false;
+  // points the sliver repair put inside (TetMeshingOptions::sliverRepairAngle;
+  // 0: it left the mesh as TetGen made it)
+  int sliverRepairPoints = 0;
   // The splittable triangles TetGen split, ascending, and the faces that
   // replace them: outward, indexing mesh.points (new points on the split
   // triangles come after the surface's), each with the split triangle it

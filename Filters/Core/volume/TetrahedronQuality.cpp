@@ -37,16 +37,34 @@ double smallestDihedralDegrees(const Vec3& a, const Vec3& b, const Vec3& c, cons
   return smallest * 180.0 / kPi;
 }
 
+namespace
+{
+void count(const TetMesh& mesh, const std::array<Index, 4>& t, DihedralQuality& q)
+{
+  const double angle =
+    smallestDihedralDegrees(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], mesh.points[t[3]]);
+  ++q.tetrahedra;
+  q.below10Degrees += angle < 10.0 ? 1 : 0;
+  q.minimumDihedralDegrees = std::min(q.minimumDihedralDegrees, angle);
+}
+} // namespace
+
 DihedralQuality dihedralQuality(const TetMesh& mesh)
 {
   DihedralQuality q;
   for (const auto& t : mesh.tets)
   {
-    const double angle =
-      smallestDihedralDegrees(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], mesh.points[t[3]]);
-    ++q.tetrahedra;
-    q.below10Degrees += angle < 10.0 ? 1 : 0;
-    q.minimumDihedralDegrees = std::min(q.minimumDihedralDegrees, angle);
+    count(mesh, t, q);
+  }
+  return q;
+}
+
+DihedralQuality dihedralQuality(const TetMesh& mesh, const std::vector<Index>& tets)
+{
+  DihedralQuality q;
+  for (Index k : tets)
+  {
+    count(mesh, mesh.tets[k], q);
   }
   return q;
 }

@@ -16,6 +16,8 @@ struct DihedralQuality
 };
 
 DihedralQuality dihedralQuality(const TetMesh& mesh);
+// ... of the tetrahedra `tets` (indices into mesh.tets) only
+DihedralQuality dihedralQuality(const TetMesh& mesh, const std::vector<Index>& tets);
 
 // The smallest dihedral angle of one tetrahedron, in degrees (0 if flat).
 double smallestDihedralDegrees(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);

@@ -1,0 +1,64 @@
+#ifndef PTM_BOUNDARY_SLIVER_REPAIR_H
+#define PTM_BOUNDARY_SLIVER_REPAIR_H
+// Stage 4b: the flat tetrahedra TetGen leaves against a kept surface
+// (switch Y), broken up by meshing small cavities around them again with a
+// point inside each.
+//
+// With -Y TetGen may not split a surface triangle, so a flat tetrahedron
+// lying on the surface stays wherever the point TetGen would insert, its
+// circumcentre, lies outside the subdomain or encroaches on the surface:
+// an "ear" (two surface triangles across a nearly flat edge) or a "wedge"
+// (one surface triangle). On the corpus at K = 16 (2 ranks) one with two
+// surface faces is the worst tetrahedron of 8 of 12 runs (CGAL's fandisk,
+// eight, elephant and part, both strategies; femur and the triple torus
+// have a wedge or an interior one). A point inside the subdomain just
+// above such a tetrahedron can remove it without touching the surface.
+//
+// Contract of repairBoundarySlivers: `mesh` is TetGen's mesh of `surface`
+// (surface points first with the same indices, positively oriented
+// tetrahedra). Where a tetrahedron with a face on the surface has a
+// dihedral angle under options.sliverRepairAngle (and is no corner of the
+// surface itself, see boundarySliverPoints), the tetrahedra within two rings
+// of it form a cavity, grown until its boundary is a closed manifold
+// surface. All cavities are meshed again in one meshClosedSurface run, their
+// boundaries kept (-Y) and the points of boundarySliverPoints inserted first
+// (-i). Each connected part of the cavity takes its new tetrahedra if their
+// smallest dihedral angle is larger than the part's and they have no more
+// tetrahedra under 10 degrees. The surface, every point on a part's
+// boundary and every tetrahedron outside the parts taken stay as they were;
+// interior points inside those parts are replaced by TetGen's. Returns the
+// points inserted (0: the mesh is unchanged). Same input, same mesh.
+#include "TetGenSubdomainMesher.h"
+
+#include <vector>
+
+namespace ptm
+{
+struct BoundarySliverPoint
+{
+  Vec3 point;
+  Index tetrahedron; // the flat tetrahedron it breaks up (index into mesh.tets)
+};
+
+// For each tetrahedron with a face on the surface and a dihedral angle
+// under `angleDegrees`, one point: its centroid moved along the mean inward
+// normal of those faces, half its mean edge (for a wedge, one face on the
+// surface, at most halfway to its circumsphere). Skipped: tetrahedra with an
+// edge under a tenth of their mean edge (two surface points that close
+// leave no room for a point between them; CGAL's triple torus and part at
+// K = 16 keep theirs), and those with two surface faces meeting at an angle
+// under `angleDegrees` (the surface itself is that sharp there, as where a
+// plane meets the input at a shallow angle; no point can help).
+std::vector<BoundarySliverPoint> boundarySliverPoints(
+  const TriangleSurface& surface, const TetMesh& mesh, double angleDegrees);
+
+struct SliverRepairResult
+{
+  int pointsInserted = 0;   // in the parts replaced (0: the mesh was not changed)
+  int cavityTetrahedra = 0; // in the cavity parts meshed again, kept or not
+};
+
+SliverRepairResult repairBoundarySlivers(
+  const TriangleSurface& surface, const TetMeshingOptions& options, TetMesh& mesh);
+} // namespace ptm
+#endif
