@@ -116,6 +116,7 @@ struct MeshedSubdomain
   std::string error;
   std::vector<std::string> warnings;
   long long pointsAdded = 0;
+  long long sliverPoints = 0; // put inside by the sliver repair (kept meshes only)
   double volumeChange = 0, deviation = 0;
 };
 
@@ -260,6 +261,7 @@ MeshedSubdomain meshSubdomain(ptm::SubdomainSurface& surface, const ptm::TetMesh
                          "canonical order and meshed them in another order (attempt " +
       std::to_string(r.attempts) + ", switches " + r.switchesUsed + ")");
   }
+  m.sliverPoints = r.sliverRepairPoints;
   m.mesh = std::move(r.mesh);
   return m;
 }
@@ -273,6 +275,7 @@ struct OwnedSubdomains
     , meshes(subdomains.size())
     , seconds(subdomains.size(), 0.0)
     , pointsAdded(subdomains.size(), 0)
+    , sliverPoints(subdomains.size(), 0)
     , volumeChange(subdomains.size(), 0.0)
     , deviation(subdomains.size(), 0.0)
   {
@@ -282,6 +285,7 @@ struct OwnedSubdomains
   std::vector<ptm::TetMesh> meshes;
   std::vector<double> seconds;
   std::vector<long long> pointsAdded; // by the boundary refinement
+  std::vector<long long> sliverPoints; // by TetGen's sliver repair
   std::vector<double> volumeChange, deviation;
 };
 
@@ -291,6 +295,7 @@ struct MeshTotals
   ptm::GlobalMeshOffsets offsets;
   std::vector<long long> tetrahedra; // per subdomain
   long long boundaryPointsAdded = 0;
+  long long sliverRepairPoints = 0;
   double relativeVolumeChange = 0, largestDeviation = 0;
   ptm::DihedralQuality quality;
 };
@@ -307,18 +312,19 @@ MeshTotals gatherTotals(
     // private to the subdomain and numbered with it
     counts.insert(counts.end(), { owned.ids[k],
       static_cast<long long>(owned.meshes[k].points.size() - owned.surfaces[k].globalIds.size()),
-      static_cast<long long>(owned.meshes[k].tets.size()), owned.pointsAdded[k] });
+      static_cast<long long>(owned.meshes[k].tets.size()), owned.pointsAdded[k], owned.sliverPoints[k] });
     changes.insert(changes.end(), { static_cast<double>(owned.ids[k]), owned.volumeChange[k], owned.deviation[k] });
   }
   MeshTotals totals;
   const std::vector<long long> allCounts = ptm::allGatherValues(controller, counts);
   std::vector<long long> interior(K, 0);
   totals.tetrahedra.assign(K, 0);
-  for (std::size_t k = 0; k + 3 < allCounts.size(); k += 4)
+  for (std::size_t k = 0; k + 4 < allCounts.size(); k += 5)
   {
     interior[allCounts[k]] = allCounts[k + 1];
     totals.tetrahedra[allCounts[k]] = allCounts[k + 2];
     totals.boundaryPointsAdded += allCounts[k + 3];
+    totals.sliverRepairPoints += allCounts[k + 4];
   }
   totals.offsets = ptm::globalMeshOffsets(piece.globalPointCount, interior, totals.tetrahedra);
   const std::vector<double> allChanges = ptm::allGatherValues(controller, changes);
@@ -510,6 +516,7 @@ void addTotals(
   addCount("GlobalPointCount", totals.offsets.pointCount);
   addCount("GlobalCellCount", totals.offsets.tetrahedronCount);
   addCount("BoundaryPointsAdded", totals.boundaryPointsAdded);
+  addCount("SliverRepairPoints", totals.sliverRepairPoints);
   addValue("BoundaryVolumeChange", totals.relativeVolumeChange);
   addValue("BoundaryLargestDeviation", totals.largestDeviation);
   addCount("TetrahedraBelow10Degrees", totals.quality.below10Degrees);
@@ -546,6 +553,7 @@ ptm::TetMeshingOptions meshingOptions(vtkParallelTetMesher* filter, const ptm::C
     ? filter->GetMaximumVolume()
     : std::pow(piece.inputMeanEdgeLength, 3) / (6.0 * std::sqrt(2.0));
   options.minimumDihedralAngle = filter->GetMinimumDihedralAngle();
+  options.sliverRepairAngle = filter->GetSliverRepairAngle();
   options.extraSwitches = filter->GetExtraSwitches();
   return options;
 }
@@ -578,6 +586,7 @@ std::string meshOwnedSubdomains(vtkParallelTetMesher* filter, const ptm::Complex
         return where + m.error;
       }
       owned.pointsAdded[k] = m.pointsAdded;
+      owned.sliverPoints[k] = m.sliverPoints;
       owned.volumeChange[k] = m.volumeChange;
       owned.deviation[k] = m.deviation;
       owned.meshes[k] = std::move(m.mesh);
@@ -639,6 +648,8 @@ std::string vtkParallelTetMesher::PropertyError()
     "MaximumVolume", "be 0 (automatic) or a positive volume", this->MaximumVolume);
   checks.Require(this->MinimumDihedralAngle >= 0.0 && this->MinimumDihedralAngle <= 30.0,
     "MinimumDihedralAngle", "lie in [0, 30] degrees", this->MinimumDihedralAngle);
+  checks.Require(this->SliverRepairAngle >= 0.0 && this->SliverRepairAngle <= 30.0,
+    "SliverRepairAngle", "lie in [0, 30] degrees", this->SliverRepairAngle);
   checks.Require(this->CoplanarTolerance >= 0.0 && this->CoplanarTolerance <= 10.0,
     "CoplanarTolerance", "lie in [0, 10] degrees", this->CoplanarTolerance);
   checks.Require(this->BoundaryMinimumAngle > 0.0 && this->BoundaryMinimumAngle <= 34.0,
@@ -711,6 +722,7 @@ void vtkParallelTetMesher::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RadiusEdgeRatio: " << this->RadiusEdgeRatio << "\n";
   os << indent << "MaximumVolume: " << this->MaximumVolume << "\n";
   os << indent << "MinimumDihedralAngle: " << this->MinimumDihedralAngle << "\n";
+  os << indent << "SliverRepairAngle: " << this->SliverRepairAngle << "\n";
   os << indent << "ExtraSwitches: " << this->ExtraSwitches << "\n";
   os << indent << "SizeExpression: " << this->SizeExpression << "\n";
   os << indent << "BoundaryRefinement: " << this->BoundaryRefinement << "\n";

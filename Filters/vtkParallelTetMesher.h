@@ -74,6 +74,18 @@ public:
   ///@}
 
   ///@{
+  /// Flat tetrahedra TetGen leaves on the kept surface (degrees; default 5,
+  /// 0 = off): where a subdomain's mesh has a tetrahedron with a face on its
+  /// surface and a dihedral angle under this, TetGen refines the mesh again
+  /// (-ri) with one point inside above each such tetrahedron; the new mesh
+  /// is kept if its smallest dihedral angle is larger and its share under 10
+  /// degrees not. The surface is never touched (see ptm::boundarySliverPoints).
+  /// The points of the kept meshes are the field data SliverRepairPoints.
+  vtkSetMacro(SliverRepairAngle, double);
+  vtkGetMacro(SliverRepairAngle, double);
+  ///@}
+
+  ///@{
   /// Boundary refinement before TetGen (default on; see
   /// ptm::refineSubdomainSurface): the outer part of every subdomain surface
   /// is meshed anew on the input surface, with edges near the target size
@@ -134,6 +146,7 @@ protected:
   double RadiusEdgeRatio = 2.0;
   double MaximumVolume = 0.0;
   double MinimumDihedralAngle = 10.0;
+  double SliverRepairAngle = 5.0;
   std::string ExtraSwitches;
   std::string SizeExpression;
   bool BoundaryRefinement = true;

@@ -53,6 +53,9 @@ def parse_arguments(argv):
     p.add_argument("--min-dihedral", type=float, default=10.0,
                    help="smallest dihedral angle TetGen aims for, the second -q value (default 10; 0: none, "
                    "as serial tetgen -pq2.0)")
+    p.add_argument("--sliver-repair-angle", type=float, default=5.0,
+                   help="refine a subdomain's mesh once more with points above its flat tetrahedra on the surface "
+                   "under this dihedral angle (degrees; default 5, 0: off)")
     p.add_argument("--relax-iterations", type=int, default=10, help="surface relaxation sweeps (default 10)")
     p.add_argument("--no-contour-subdivision", action="store_true",
                    help="keep the contours as the cut made them (default: their long edges are split at the size "
@@ -244,6 +247,7 @@ def main(argv):
     volume = args.size ** 3 / (6 * math.sqrt(2)) if args.size > 0 else 0.0
     mesher = run("volume meshing", simple.ParallelTetMesher(
         Input=relaxed, RadiusEdgeRatio=args.radius_edge_ratio, MinimumDihedralAngle=args.min_dihedral,
+        SliverRepairAngle=args.sliver_repair_angle,
         MaximumVolume=volume,
         BoundaryRefinement=0 if args.no_boundary_refinement else 1,
         CoplanarTolerance=args.coplanar_tolerance, SizeExpression=args.size_expression))
@@ -293,6 +297,7 @@ def main(argv):
         "quality": {
             "minimum_dihedral_angle_degrees": minimum_dihedral,
             "share_below_10_degrees": below_10 / float(max(tets, 1)),
+            "sliver_repair_points": int(fd.GetArray("SliverRepairPoints").GetValue(0)),
         },
         "boundary_refinement": {
             "points_added": int(fd.GetArray("BoundaryPointsAdded").GetValue(0)),
@@ -311,8 +316,10 @@ def main(argv):
         summary["tetrahedra"], summary["points"], summary["subdomains"], ranks, subdomains_per_rank))
     print("tetmesh: balance max/mean tetrahedra per rank %.3f" % summary["balance_max_over_mean"])
     print("tetmesh: seconds " + ", ".join("%s %.2f" % (k, v) for k, v in times.items()))
-    print("tetmesh: minimum dihedral angle %.2f degrees, %.4f%% of tetrahedra under 10 degrees" % (
-        minimum_dihedral, 100 * summary["quality"]["share_below_10_degrees"]))
+    print("tetmesh: minimum dihedral angle %.2f degrees, %.4f%% of tetrahedra under 10 degrees "
+          "(%d points put in by the sliver repair)" % (
+              minimum_dihedral, 100 * summary["quality"]["share_below_10_degrees"],
+              summary["quality"]["sliver_repair_points"]))
     print("tetmesh: wrote %s and %s" % (output, boundary_file))
     if args.json:
         with open(args.json, "w") as f:
