@@ -122,43 +122,19 @@ void edgeLengths(const TetMesh& mesh, const std::array<Index, 4>& t, double& mea
   mean = sum / 6.0;
 }
 
-// The tetrahedra at every point (compressed rows: those of point v are
-// tets[first[v]] .. tets[first[v + 1] - 1]).
-struct PointStars
+// Adds to the cavity every tetrahedron with a corner marked. One pass over
+// the mesh instead of a table of the tetrahedra at every point, which
+// would take 32 bytes per tetrahedron (a sixth of the mesh's own) for
+// cavities of a few hundred.
+void addTetrahedraAt(const TetMesh& mesh, const std::vector<char>& marked, std::vector<char>& inCavity)
 {
-  std::vector<std::size_t> first;
-  std::vector<Index> tets;
-};
-
-PointStars pointStars(const TetMesh& mesh)
-{
-  PointStars stars;
-  stars.first.assign(mesh.points.size() + 1, 0);
-  for (const auto& t : mesh.tets)
-  {
-    for (Index v : t)
-    {
-      ++stars.first[v + 1];
-    }
-  }
-  std::partial_sum(stars.first.begin(), stars.first.end(), stars.first.begin());
-  stars.tets.resize(stars.first.back());
-  std::vector<std::size_t> next(stars.first.begin(), stars.first.end() - 1);
   for (std::size_t k = 0; k < mesh.tets.size(); ++k)
   {
-    for (Index v : mesh.tets[k])
+    const auto& t = mesh.tets[k];
+    if (!inCavity[k] && std::any_of(t.begin(), t.end(), [&](Index v) { return marked[v] != 0; }))
     {
-      stars.tets[next[v]++] = static_cast<Index>(k);
+      inCavity[k] = 1;
     }
-  }
-  return stars;
-}
-
-void addStar(const PointStars& stars, Index v, std::vector<char>& inCavity)
-{
-  for (std::size_t i = stars.first[v]; i < stars.first[v + 1]; ++i)
-  {
-    inCavity[stars.tets[i]] = 1;
   }
 }
 
@@ -303,20 +279,19 @@ std::vector<Index> marked(const std::vector<char>& mask)
   return tets;
 }
 
-std::vector<char> cavityOf(
-  const TetMesh& mesh, const PointStars& stars, const std::vector<BoundarySliverPoint>& points)
+std::vector<char> cavityOf(const TetMesh& mesh, const std::vector<BoundarySliverPoint>& points)
 {
-  std::vector<char> inCavity(mesh.tets.size(), 0);
+  std::vector<char> inCavity(mesh.tets.size(), 0), corner(mesh.points.size(), 0);
   for (const auto& p : points)
   {
     for (Index v : mesh.tets[p.tetrahedron])
     {
-      addStar(stars, v, inCavity);
+      corner[v] = 1;
     }
   }
+  addTetrahedraAt(mesh, corner, inCavity);
   for (int ring = 1; ring < kCavityRings; ++ring)
   {
-    std::vector<char> corner(mesh.points.size(), 0);
     for (Index k : marked(inCavity))
     {
       for (Index v : mesh.tets[k])
@@ -324,13 +299,7 @@ std::vector<char> cavityOf(
         corner[v] = 1;
       }
     }
-    for (std::size_t v = 0; v < corner.size(); ++v)
-    {
-      if (corner[v])
-      {
-        addStar(stars, static_cast<Index>(v), inCavity);
-      }
-    }
+    addTetrahedraAt(mesh, corner, inCavity);
   }
   for (int round = 0; round < kCavityRounds; ++round)
   {
@@ -339,10 +308,12 @@ std::vector<char> cavityOf(
     {
       return inCavity;
     }
+    std::fill(corner.begin(), corner.end(), 0);
     for (Index v : pinched)
     {
-      addStar(stars, v, inCavity);
+      corner[v] = 1;
     }
+    addTetrahedraAt(mesh, corner, inCavity);
   }
   return pinchedPoints(cavityBoundary(mesh, marked(inCavity))).empty() ? inCavity : std::vector<char>{};
 }
@@ -356,44 +327,49 @@ struct CavityPart
   std::vector<std::size_t> points; // into the sliver points
 };
 
-std::vector<CavityPart> cavityParts(const TetMesh& mesh, const PointStars& stars, const std::vector<char>& inCavity,
-  const std::vector<BoundarySliverPoint>& points)
+std::vector<CavityPart> cavityParts(
+  const TetMesh& mesh, const std::vector<char>& inCavity, const std::vector<BoundarySliverPoint>& points)
 {
-  std::vector<int> part(mesh.tets.size(), -1);
-  std::vector<CavityPart> parts;
-  for (std::size_t seed = 0; seed < mesh.tets.size(); ++seed)
+  const std::vector<Index> tets = marked(inCavity);
+  // tetrahedra sharing a point join: union-find over the cavity's own
+  std::vector<std::size_t> group(tets.size());
+  std::iota(group.begin(), group.end(), 0);
+  std::function<std::size_t(std::size_t)> root = [&](std::size_t i) {
+    return group[i] == i ? i : group[i] = root(group[i]);
+  };
+  std::vector<std::pair<Index, std::size_t>> corners; // (point, position in tets)
+  for (std::size_t i = 0; i < tets.size(); ++i)
   {
-    if (!inCavity[seed] || part[seed] >= 0)
+    for (Index v : mesh.tets[tets[i]])
     {
-      continue;
+      corners.push_back({ v, i });
     }
-    const int id = static_cast<int>(parts.size());
-    parts.emplace_back();
-    std::vector<Index> queue{ static_cast<Index>(seed) };
-    part[seed] = id;
-    while (!queue.empty())
+  }
+  std::sort(corners.begin(), corners.end());
+  for (std::size_t i = 1; i < corners.size(); ++i)
+  {
+    if (corners[i].first == corners[i - 1].first)
     {
-      const Index k = queue.back();
-      queue.pop_back();
-      parts[id].tets.push_back(k);
-      for (Index v : mesh.tets[k])
-      {
-        for (std::size_t i = stars.first[v]; i < stars.first[v + 1]; ++i)
-        {
-          const Index next = stars.tets[i];
-          if (inCavity[next] && part[next] < 0)
-          {
-            part[next] = id;
-            queue.push_back(next);
-          }
-        }
-      }
+      group[root(corners[i].second)] = root(corners[i - 1].second);
     }
-    std::sort(parts[id].tets.begin(), parts[id].tets.end());
+  }
+  std::vector<int> partOfRoot(tets.size(), -1);
+  std::vector<CavityPart> parts;
+  for (std::size_t i = 0; i < tets.size(); ++i)
+  {
+    int& id = partOfRoot[root(i)];
+    if (id < 0)
+    {
+      id = static_cast<int>(parts.size());
+      parts.emplace_back();
+    }
+    parts[id].tets.push_back(tets[i]); // ascending, as tets is
   }
   for (std::size_t p = 0; p < points.size(); ++p)
   {
-    parts[part[points[p].tetrahedron]].points.push_back(p);
+    const auto i = static_cast<std::size_t>(
+      std::lower_bound(tets.begin(), tets.end(), points[p].tetrahedron) - tets.begin());
+    parts[partOfRoot[root(i)]].points.push_back(p);
   }
   return parts;
 }
@@ -712,13 +688,12 @@ SliverRepairResult repairBoundarySlivers(
   {
     return result;
   }
-  const PointStars stars = pointStars(mesh);
-  const std::vector<char> inCavity = cavityOf(mesh, stars, points);
+  const std::vector<char> inCavity = cavityOf(mesh, points);
   if (inCavity.empty())
   {
     return result;
   }
-  const std::vector<CavityPart> parts = cavityParts(mesh, stars, inCavity, points);
+  const std::vector<CavityPart> parts = cavityParts(mesh, inCavity, points);
   result.cavityTetrahedra = static_cast<int>(std::count(inCavity.begin(), inCavity.end(), 1));
   Remeshed run;
   result.pointsInserted = remeshParts(surface, options, mesh, points, parts, run);
