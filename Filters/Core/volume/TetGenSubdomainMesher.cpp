@@ -777,6 +777,16 @@ std::string recoverySwitches(const TetMeshingOptions& options)
   return "pYzQ" + options.extraSwitches;
 }
 
+// The switches of the second run of recoverThenRefine: those of the one
+// run, in r mode. The inside points (-i) are not inserted in this fall-back:
+// a sliver repair cavity meshed only so is not improved, and not kept.
+std::string refinementSwitches(const TetMeshingOptions& options, double volume)
+{
+  TetMeshingOptions refine = options;
+  refine.insidePoints.clear();
+  return tetgenSwitches(refine, volume, 'r');
+}
+
 // The input of the second run of recoverThenRefine: the first run's mesh
 // (surface points first, in the surface's order), the surface triangles as
 // the faces -Y keeps, and with a size field a size at every point: a point
@@ -884,9 +894,7 @@ TetGenRuns recoverThenRefine(const TriangleSurface& s, const TetMeshingOptions& 
   std::iota(second.order.begin(), second.order.end(), Index{ 0 });
   second.attempts = 1;
   bool timedOut = false;
-  TetMeshingOptions refineOnly = options;
-  refineOnly.insidePoints.clear(); // -i would need them again (the first run inserted them)
-  runTetGenIsolated(in, tetgenSwitches(refineOnly, volume, 'r') + first.tolerance, limits.cpu, limits.wall, second.points,
+  runTetGenIsolated(in, refinementSwitches(options, volume) + first.tolerance, limits.cpu, limits.wall, second.points,
     second.tets, second.status, second.code, timedOut, second.failure);
   return second;
 }
@@ -1218,8 +1226,8 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
     if (twoRuns.failure.empty() && twoRuns.status == 0)
     {
       runs = std::move(twoRuns);
-      r.switchesUsed = recoverySwitches(options) + runs.tolerance + ", then " + tetgenSwitches(options, volume, 'r') +
-        runs.tolerance;
+      r.switchesUsed =
+        recoverySwitches(options) + runs.tolerance + ", then " + refinementSwitches(options, volume) + runs.tolerance;
       r.recoveredThenRefined = true;
     }
   }

@@ -20,7 +20,10 @@
 // reversed, then shuffled, then with the facets shuffled too (fixed seeds;
 // six orders in all). If all of them fail, the surface
 // is recovered in one run without refinement and the mesh refined in a
-// second (-rY). The same input and options give the same mesh.
+// second (-rY). Flat tetrahedra TetGen leaves on the surface are then
+// repaired in small cavities meshed again (TetMeshingOptions::
+// sliverRepairAngle, BoundarySliverRepair.h). The same input and options
+// give the same mesh.
 #include "TriangleSurface.h"
 
 #include <string>
