@@ -675,29 +675,22 @@ std::vector<BoundarySliverPoint> boundarySliverPoints(
   return points;
 }
 
-SliverRepairResult repairBoundarySlivers(
-  const TriangleSurface& surface, const TetMeshingOptions& options, TetMesh& mesh)
+int repairBoundarySlivers(const TriangleSurface& surface, const TetMeshingOptions& options, TetMesh& mesh)
 {
-  SliverRepairResult result;
   if (!(options.sliverRepairAngle > 0) || !options.qualityRefinement)
   {
-    return result;
+    return 0;
   }
   const std::vector<BoundarySliverPoint> points = boundarySliverPoints(surface, mesh, options.sliverRepairAngle);
-  if (points.empty())
-  {
-    return result;
-  }
-  const std::vector<char> inCavity = cavityOf(mesh, points);
+  const std::vector<char> inCavity = points.empty() ? std::vector<char>{} : cavityOf(mesh, points);
   if (inCavity.empty())
   {
-    return result;
+    return 0;
   }
   const std::vector<CavityPart> parts = cavityParts(mesh, inCavity, points);
-  result.cavityTetrahedra = static_cast<int>(std::count(inCavity.begin(), inCavity.end(), 1));
   Remeshed run;
-  result.pointsInserted = remeshParts(surface, options, mesh, points, parts, run);
-  if (result.pointsInserted > 0)
+  const int inserted = remeshParts(surface, options, mesh, points, parts, run);
+  if (inserted > 0)
   {
     std::vector<char> partKept(parts.size(), 0), replaced(mesh.tets.size(), 0);
     for (std::size_t k = 0; k < run.mesh.tets.size(); ++k)
@@ -713,6 +706,6 @@ SliverRepairResult repairBoundarySlivers(
     }
     spliceParts(mesh, replaced, run, surface.points.size());
   }
-  return result;
+  return inserted;
 }
 } // namespace ptm

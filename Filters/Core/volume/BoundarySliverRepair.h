@@ -52,13 +52,6 @@ struct BoundarySliverPoint
 std::vector<BoundarySliverPoint> boundarySliverPoints(
   const TriangleSurface& surface, const TetMesh& mesh, double angleDegrees);
 
-struct SliverRepairResult
-{
-  int pointsInserted = 0;   // in the parts replaced (0: the mesh was not changed)
-  int cavityTetrahedra = 0; // in the cavity parts meshed again, kept or not
-};
-
-SliverRepairResult repairBoundarySlivers(
-  const TriangleSurface& surface, const TetMeshingOptions& options, TetMesh& mesh);
+int repairBoundarySlivers(const TriangleSurface& surface, const TetMeshingOptions& options, TetMesh& mesh);
 } // namespace ptm
 #endif

@@ -1251,7 +1251,7 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
   {
     TetMeshingOptions resolved = options;
     resolved.maximumVolume = volume;
-    r.sliverRepairPoints = repairBoundarySlivers(s, resolved, r.mesh).pointsInserted;
+    r.sliverRepairPoints = repairBoundarySlivers(s, resolved, r.mesh);
   }
   return r;
 }
