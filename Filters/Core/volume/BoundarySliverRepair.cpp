@@ -38,8 +38,6 @@ const int kFaceCorners[4][3] = { { 0, 1, 2 }, { 0, 1, 3 }, { 0, 2, 3 }, { 1, 2, 
 int inwardNormal(const std::vector<Triangle>& surfaceKeys, const TetMesh& mesh, const std::array<Index, 4>& t,
   double angleDegrees, Vec3& inward)
 {
-  Vec3 sum{ 0, 0, 0 };
-  int onSurface = 0;
   std::vector<Vec3> normals;
   for (int f = 0; f < 4; ++f)
   {
@@ -56,10 +54,7 @@ int inwardNormal(const std::vector<Triangle>& surfaceKeys, const TetMesh& mesh, 
       continue;
     }
     const Vec3& off = mesh.points[t[6 - kFaceCorners[f][0] - kFaceCorners[f][1] - kFaceCorners[f][2]]];
-    n = (dot(n, off - a) > 0 ? 1.0 : -1.0) / length * n;
-    sum = sum + n;
-    ++onSurface;
-    normals.push_back(n);
+    normals.push_back((dot(n, off - a) > 0 ? 1.0 : -1.0) / length * n);
   }
   // two surface faces at an angle under the bound: the surface itself is
   // that sharp there (a plane meeting the input at a shallow angle), and
@@ -74,13 +69,18 @@ int inwardNormal(const std::vector<Triangle>& surfaceKeys, const TetMesh& mesh, 
       }
     }
   }
+  Vec3 sum{ 0, 0, 0 };
+  for (const Vec3& n : normals)
+  {
+    sum = sum + n;
+  }
   const double length = norm(sum);
   if (!(length > 0))
   {
     return 0;
   }
   inward = (1.0 / length) * sum;
-  return onSurface;
+  return static_cast<int>(normals.size());
 }
 
 // How far from `from` along the unit vector `direction` the circumsphere of
@@ -145,9 +145,7 @@ std::vector<Triangle> cavityBoundary(const TetMesh& mesh, const std::vector<Inde
   for (Index k : tets)
   {
     const auto& t = mesh.tets[k];
-    // outward for a positively oriented tetrahedron
-    for (const Triangle& f : { Triangle{ t[1], t[2], t[3] }, Triangle{ t[0], t[3], t[2] },
-           Triangle{ t[0], t[1], t[3] }, Triangle{ t[0], t[2], t[1] } })
+    for (const Triangle& f : outwardTetrahedronFaces(t))
     {
       faces.push_back(f);
     }
@@ -603,17 +601,18 @@ int remeshParts(const TriangleSurface& surface, const TetMeshingOptions& options
   }
   run.part = tetrahedronParts(run, pointPart);
   run.kept.assign(run.mesh.tets.size(), 0);
+  std::vector<std::vector<Index>> newTetsOf(parts.size());
+  for (std::size_t k = 0; k < run.mesh.tets.size(); ++k)
+  {
+    if (run.part[k] >= 0) // every part touches its boundary; a stray one is not kept
+    {
+      newTetsOf[run.part[k]].push_back(static_cast<Index>(k));
+    }
+  }
   int inserted = 0;
   for (std::size_t p = 0; p < parts.size(); ++p)
   {
-    std::vector<Index> newTets;
-    for (std::size_t k = 0; k < run.mesh.tets.size(); ++k)
-    {
-      if (run.part[k] == static_cast<int>(p))
-      {
-        newTets.push_back(static_cast<Index>(k));
-      }
-    }
+    const std::vector<Index>& newTets = newTetsOf[p];
     const DihedralQuality before = dihedralQuality(mesh, parts[p].tets);
     const DihedralQuality after = dihedralQuality(run.mesh, newTets);
     if (after.minimumDihedralDegrees > before.minimumDihedralDegrees && after.below10Degrees <= before.below10Degrees)
@@ -695,7 +694,10 @@ int repairBoundarySlivers(const TriangleSurface& surface, const TetMeshingOption
     std::vector<char> partKept(parts.size(), 0), replaced(mesh.tets.size(), 0);
     for (std::size_t k = 0; k < run.mesh.tets.size(); ++k)
     {
-      partKept[run.part[k]] |= run.kept[k];
+      if (run.kept[k])
+      {
+        partKept[run.part[k]] = 1;
+      }
     }
     for (std::size_t p = 0; p < parts.size(); ++p)
     {

@@ -1000,9 +1000,7 @@ std::vector<Triangle> outwardFaces(const TetMesh& mesh, const std::vector<Triang
   std::vector<Triangle> faces;
   for (const auto& t : mesh.tets)
   {
-    const Triangle outward[4] = { { t[1], t[2], t[3] }, { t[0], t[3], t[2] }, { t[0], t[1], t[3] },
-      { t[0], t[2], t[1] } };
-    for (const Triangle& f : outward)
+    for (const Triangle& f : outwardTetrahedronFaces(t))
     {
       if (contains(keys, sortedCorners(f)))
       {

@@ -96,6 +96,13 @@ struct TetMesh
   std::vector<std::array<Index, 4>> tets; // positive volume (VTK_TETRA order)
 };
 
+// The four faces of a positively oriented tetrahedron, each turned outward.
+inline std::array<Triangle, 4> outwardTetrahedronFaces(const std::array<Index, 4>& t)
+{
+  return { Triangle{ t[1], t[2], t[3] }, Triangle{ t[0], t[3], t[2] }, Triangle{ t[0], t[1], t[3] },
+    Triangle{ t[0], t[2], t[1] } };
+}
+
 struct TetMeshingResult
 {
   bool ok = false;
