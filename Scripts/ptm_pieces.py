@@ -3,11 +3,14 @@
 The solver runs under the system Python (/usr/bin/python3, where dolfinx and
 petsc4py live), which has no VTK; meshio reads .vtu but not the boundary
 .vtp, so this is a small reader of exactly what tetmesh.py writes: XML files
-with inline, uncompressed base64 arrays (or ascii). Anything else (appended or
-compressed data) is refused with a message instead of being misread.
+whose arrays are uncompressed, appended raw (tetmesh.py since session 15),
+inline base64 (before, and this module's own writer) or ascii. Anything else
+(base64-encoded appended or compressed data) is refused with a message
+instead of being misread.
 """
 import base64
 import os
+import re
 import xml.etree.ElementTree as ET
 
 import numpy as np
@@ -37,8 +40,22 @@ def piece_sources(parallel_file):
     return sources
 
 
-def _decode(array, header_type, path):
-    """One <DataArray> as a numpy array (components as a second axis)."""
+def _block(raw, start, header_type, name, path):
+    """The bytes of one binary block at `start` of `raw`: a length header of
+    `header_type`, then that many bytes (nothing may follow for inline data)."""
+    hsize = np.dtype(header_type).itemsize
+    if len(raw) < start + hsize:
+        raise PieceError(f"{path}: array {name}: truncated binary data")
+    nbytes = int(np.frombuffer(raw[start:start + hsize], dtype=header_type)[0])
+    if len(raw) < start + hsize + nbytes:
+        raise PieceError(f"{path}: array {name}: header says {nbytes} bytes, "
+                         f"found {len(raw) - start - hsize}")
+    return raw[start + hsize:start + hsize + nbytes], start + hsize + nbytes
+
+
+def _decode(array, header_type, path, appended):
+    """One <DataArray> as a numpy array (components as a second axis);
+    `appended` is the raw bytes after the AppendedData's '_' (or None)."""
     name = array.get("Name", "?")
     dtype = VTK_TYPES.get(array.get("type"))
     if dtype is None:
@@ -49,38 +66,55 @@ def _decode(array, header_type, path):
         values = np.array(text.split(), dtype=dtype)
     elif fmt == "binary":
         raw = base64.b64decode(text)
-        hsize = np.dtype(header_type).itemsize
-        if len(raw) < hsize:
-            raise PieceError(f"{path}: array {name}: truncated binary data")
-        nbytes = int(np.frombuffer(raw[:hsize], dtype=header_type)[0])
-        if nbytes != len(raw) - hsize:
-            raise PieceError(f"{path}: array {name}: header says {nbytes} bytes, "
-                             f"found {len(raw) - hsize}")
-        values = np.frombuffer(raw[hsize:], dtype=dtype).copy()
+        data, end = _block(raw, 0, header_type, name, path)
+        if end != len(raw):
+            raise PieceError(f"{path}: array {name}: header says {len(data)} bytes, "
+                             f"found {len(raw) - np.dtype(header_type).itemsize}")
+        values = np.frombuffer(data, dtype=dtype).copy()
+    elif fmt == "appended" and appended is not None:
+        data, _ = _block(appended, int(array.get("offset", "0").strip()), header_type, name, path)
+        values = np.frombuffer(data, dtype=dtype).copy()
     else:
         raise PieceError(f"{path}: array {name}: format '{fmt}' not supported "
-                         "(tetmesh.py writes inline binary)")
+                         "(tetmesh.py writes appended raw data)")
     ncomp = int(array.get("NumberOfComponents", "1"))
     return values.reshape(-1, ncomp) if ncomp > 1 else values
 
 
-def _arrays(element, header_type, path):
+def _arrays(element, header_type, path, appended):
     if element is None:
         return {}
-    return {a.get("Name"): _decode(a, header_type, path) for a in element.findall("DataArray")}
+    return {a.get("Name"): _decode(a, header_type, path, appended) for a in element.findall("DataArray")}
+
+
+def _parse(path):
+    """The XML root of a piece and its appended raw bytes (None if it has
+    none). Raw appended data is not XML, so the XML is the text before it,
+    closed by hand."""
+    try:
+        with open(path, "rb") as f:
+            content = f.read()
+    except OSError as e:
+        raise PieceError(f"cannot read piece {path}: {e}") from e
+    tag = re.search(rb"<AppendedData([^>]*)>", content)
+    try:
+        if tag is None:
+            return ET.fromstring(content), None
+        if b'encoding="raw"' not in tag.group(1):
+            raise PieceError(f"{path}: appended data that is not raw (base64) is not supported")
+        underscore = content.index(b"_", tag.end())
+        root = ET.fromstring(content[:tag.start()] + b"</VTKFile>")
+    except (ET.ParseError, ValueError) as e:
+        raise PieceError(f"cannot read piece {path}: {e}") from e
+    return root, memoryview(content)[underscore + 1:]
 
 
 def read_piece(path):
     """One .vtu or .vtp piece: points, the cell (or polygon) connectivity and
     offsets, cell types, and the point, cell and field data by name."""
-    try:
-        root = ET.parse(path).getroot()
-    except (OSError, ET.ParseError) as e:
-        raise PieceError(f"cannot read piece {path}: {e}") from e
+    root, appended = _parse(path)
     if root.get("compressor"):
         raise PieceError(f"{path}: compressed data ({root.get('compressor')}) not supported")
-    if root.find(".//AppendedData") is not None:
-        raise PieceError(f"{path}: appended data not supported (tetmesh.py writes inline binary)")
     header_type = {"UInt64": np.uint64, "UInt32": np.uint32}[root.get("header_type", "UInt32")]
     grid = root[0]
     pieces = grid.findall("Piece")
@@ -90,17 +124,17 @@ def read_piece(path):
     topo = piece.find("Cells") if root.get("type") == "UnstructuredGrid" else piece.find("Polys")
     if piece.find("Points") is None or topo is None:
         raise PieceError(f"{path}: no Points or Cells/Polys section")
-    cells = _arrays(topo, header_type, path)
-    points = _arrays(piece.find("Points"), header_type, path)
+    cells = _arrays(topo, header_type, path, appended)
+    points = _arrays(piece.find("Points"), header_type, path, appended)
     return {
         "points": next(iter(points.values())).reshape(-1, 3).astype(np.float64)
         if points else np.zeros((0, 3)),
         "connectivity": cells.get("connectivity", np.zeros(0, np.int64)).astype(np.int64),
         "offsets": cells.get("offsets", np.zeros(0, np.int64)).astype(np.int64),
         "types": cells.get("types"),
-        "point_data": _arrays(piece.find("PointData"), header_type, path),
-        "cell_data": _arrays(piece.find("CellData"), header_type, path),
-        "field_data": _arrays(grid.find("FieldData"), header_type, path),
+        "point_data": _arrays(piece.find("PointData"), header_type, path, appended),
+        "cell_data": _arrays(piece.find("CellData"), header_type, path, appended),
+        "field_data": _arrays(grid.find("FieldData"), header_type, path, appended),
         "bytes": os.path.getsize(path),
     }
 
@@ -128,7 +162,8 @@ def _xml_array(name, values):
 
 
 def write_tetra_piece(path, points, tets, point_data, cell_data):
-    """One .vtu piece of linear tetrahedra with inline binary arrays."""
+    """One .vtu piece of linear tetrahedra with inline binary arrays (which
+    read_piece reads as well as the raw appended ones tetmesh.py writes)."""
     n, m = len(points), len(tets)
     with open(path, "w") as f:
         f.write('<?xml version="1.0"?>\n<VTKFile type="UnstructuredGrid" version="1.0" '
