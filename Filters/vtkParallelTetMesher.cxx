@@ -252,8 +252,8 @@ MeshedSubdomain meshSubdomain(ptm::SubdomainSurface& surface, const ptm::TetMesh
   }
   if (r.recoveredThenRefined)
   {
-    m.warnings.push_back("TetGen crashed or stalled meshing and refining in one run (in all six input "
-                         "orders); meshed in two runs: " + r.switchesUsed);
+    m.warnings.push_back("TetGen crashed or stalled meshing and refining in one run (in every input "
+                         "order tried); meshed in two runs: " + r.switchesUsed);
   }
   else if (r.attempts > 1)
   {

@@ -252,6 +252,24 @@ TEST(TetGenSubdomainMesher, AbortInThreePointOrdersIsRetriedWithFacetsShuffled)
   EXPECT_EQ(a.mesh.tets, b.mesh.tets);
 }
 
+TEST(TetGenSubdomainMesher, AbortInSixOrdersIsRetriedInMoreOrders)
+{
+  // OCCT's fuse.brep (tetmesh's default size) at K = 48, parallel planes,
+  // subdomain 30: TetGen 1.5 aborts recovering a segment
+  // (addsteiner4recoversegment) in the first six orders and meshes it in
+  // one run in a later one. With six orders, tetmesh.py failed there (2 and 3
+  // ranks); meshed alone with six orders it needs the two-run fall-back.
+  const TriangleSurface surface = regressionSurface("tetgen_aborts_in_six_orders.off");
+  TetMeshingOptions options = boundedOptions(8.4925592073193632e-05);
+  const TetMeshingResult a = meshClosedSurface(surface, options);
+  EXPECT_GT(a.attempts, kInputOrdersAfterAStall);
+  EXPECT_FALSE(a.recoveredThenRefined);
+  expectConformingMesh(surface, a, "more shuffled orders");
+  options.inputOrders = kInputOrdersAfterAStall;
+  const TetMeshingResult six = meshClosedSurface(surface, options);
+  EXPECT_TRUE(!six.ok || six.recoveredThenRefined) << six.switchesUsed;
+}
+
 TEST(TetGenSubdomainMesher, PointsMergedByTetGenAreRetriedWithAFinerTolerance)
 {
   // two points of this subdomain are closer than TetGen's default tolerance:
@@ -273,7 +291,7 @@ TEST(TetGenSubdomainMesher, AbortWhenRefiningIsMeshedInTwoRuns)
   // a size field at the points (-m), and the same mesh every time
   const TriangleSurface surface = regressionSurface("tetgen_abort_when_refining.off");
   TetMeshingOptions options = boundedOptions(5.0097439922402185e-06);
-  // with the facets shuffled too (all six orders, the default) it meshes in
+  // with the facets shuffled too (all orders, the default) it meshes in
   // one run, so the two-run fall-back is reached with three orders only
   const TetMeshingResult allOrders = meshClosedSurface(surface, options);
   EXPECT_FALSE(allOrders.recoveredThenRefined);

@@ -638,14 +638,21 @@ struct TetGenRuns
 // rank. The facet order matters as much: OCCT's Top at K = 16 (parallel
 // planes), subdomain 4 of 3,851 points, crashed with -pY in the first three
 // orders; with Debian's tetgen it meshed in 3 of 10 random point orders, 7
-// of 10 facet orders and 10 of 12 with both shuffled.
+// of 10 facet orders and 10 of 12 with both shuffled. Six more shuffled
+// orders follow where none stalled: OCCT's fuse.brep at K = 48 (parallel
+// planes), subdomain 30 of 6,062 points, crashed in the first six
+// (addsteiner4recoversegment) and meshed in the seventh (Debian's tetgen
+// -pY: 5 of 16 random orders), which made the run succeed. A stall costs
+// the whole time limit: OCCT's mal_vis.brep at K = 48 stalled in all twelve
+// orders on one subdomain (7 min 53 s to fail on 2 ranks, 6 orders each
+// took about half), so after a stall the first six are all.
 TetGenRuns runInOrders(const TriangleSurface& s, const TetMeshingOptions& options, const std::vector<Vec3>& holes,
   const std::string& switches, const TimeLimits& limits)
 {
   const std::size_t n = s.points.size();
   TetGenRuns runs;
   runs.order.resize(n);
-  bool meshed = false;
+  bool meshed = false, stalled = false;
   std::vector<Index> facets;
   for (int attempt = 0; attempt < options.inputOrders && !meshed; ++attempt)
   {
@@ -668,8 +675,9 @@ TetGenRuns runInOrders(const TriangleSurface& s, const TetMeshingOptions& option
       runs.code, timedOut, runs.failure, options.insidePoints.empty() ? nullptr : &addin);
     meshed = ran && runs.status == 0;
     runs.attempts = attempt + 1;
+    stalled = stalled || timedOut;
     const bool retry = !ran || (runs.status == 1 && runs.code == 2);
-    if (!retry)
+    if (!retry || (stalled && runs.attempts >= kInputOrdersAfterAStall))
     {
       break;
     }

@@ -18,7 +18,7 @@
 // when the points come in another order: then (a crash, or a run over its
 // processor-time limit, which is stopped) it runs again with the points
 // reversed, then shuffled, then with the facets shuffled too (fixed seeds;
-// six orders in all). If all of them fail, the surface
+// six orders, and six more where none stalled). If all of them fail, the surface
 // is recovered in one run without refinement and the mesh refined in a
 // second (-rY). Flat tetrahedra TetGen leaves on the surface are then
 // repaired in small cavities meshed again (TetMeshingOptions::
@@ -30,8 +30,12 @@
 
 namespace ptm
 {
-// How many input orders TetMeshingOptions::inputOrders allows (see there).
-constexpr int kInputOrders = 6;
+// How many input orders TetMeshingOptions::inputOrders allows (see there),
+// and how many are tried once a run has stalled: a stall costs the whole
+// processor-time limit, a crash (an assertion in boundary recovery) a
+// fraction of a second. The measurements are at runInOrders.
+constexpr int kInputOrders = 12;
+constexpr int kInputOrdersAfterAStall = 6;
 
 struct TetMeshingOptions
 {
@@ -73,8 +77,9 @@ struct TetMeshingOptions
   double timeLimitSeconds = 0.0;
   // input orders tried after a crash or stall before the two-run fall-back,
   // 1..kInputOrders: the points as given, reversed, shuffled, then points
-  // and facets shuffled (fixed seeds, so the same mesh on any rank). Fewer
-  // orders fail sooner on a surface TetGen cannot mesh.
+  // and facets shuffled (fixed seeds, so the same mesh on any rank); at
+  // most kInputOrdersAfterAStall once a run has stalled. Fewer orders fail
+  // sooner on a surface TetGen cannot mesh.
   int inputOrders = kInputOrders;
   // Flat tetrahedra left on the surface: where the mesh has a tetrahedron
   // with a face on the surface and a dihedral angle under this many degrees,
