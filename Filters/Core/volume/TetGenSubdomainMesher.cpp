@@ -644,8 +644,9 @@ struct TetGenRuns
 // (addsteiner4recoversegment) and meshed in the seventh (Debian's tetgen
 // -pY: 5 of 16 random orders), which made the run succeed. A stall costs
 // the whole time limit: OCCT's mal_vis.brep at K = 48 stalled in all twelve
-// orders on one subdomain (7 min 53 s to fail on 2 ranks, 6 orders each
-// took about half), so after a stall the first six are all.
+// orders on one subdomain (the run failed after 7 min 20 s of processor
+// time on 2 ranks; with six orders after a stall, 4 min 26 s), so after a
+// stall the first six are all.
 TetGenRuns runInOrders(const TriangleSurface& s, const TetMeshingOptions& options, const std::vector<Vec3>& holes,
   const std::string& switches, const TimeLimits& limits)
 {
@@ -972,8 +973,9 @@ bool contains(const std::vector<Triangle>& sorted, const Triangle& key)
 // The faces used by one tetrahedron only, corners sorted, in sorted order;
 // with `below` >= 0, only faces whose corners are all points under `below`
 // (the surface's points, which TetGen's output lists first). All faces
-// would take 4 keys of 24 bytes per tetrahedron: 480 MB and a sort of 2.4 s
-// (measured 0.46 s on 1.2 M tetrahedra) on a rank's half of the 10 M ball.
+// take 4 keys of 24 bytes per tetrahedron (480 MB for a rank's half of the
+// 10 M ball), and their sort took 4 % of a rank's processor time on the
+// 2.4 M ball.
 std::vector<Triangle> boundaryFaces(const TetMesh& mesh, Index below = -1)
 {
   std::vector<Triangle> faces;
