@@ -125,6 +125,11 @@ TEST(CADTessellation, RefusesWithTheProblemNamed)
   EXPECT_FALSE(r.ok);
   EXPECT_NE(r.error.find("no solid"), std::string::npos) << r.error;
 
+  REQUIRE_FILE(kData + "occ/asahi.brep"); // curves, no faces
+  r = readCADSurface(kData + "occ/asahi.brep", CADReadOptions());
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("no faces either"), std::string::npos) << r.error;
+
   CADReadOptions beyond;
   beyond.solid = 7;
   r = readCADSurface(kData + "occ/Pump_Nut.brep", beyond);

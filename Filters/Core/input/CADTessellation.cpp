@@ -247,9 +247,17 @@ CADSurface readCADSurface(const std::string& fileName, const CADReadOptions& opt
       if (solidMap.Extent() == 0)
       {
         std::ostringstream msg;
-        msg << fileName << ": no solid in the file, and its " << fileFaces
-            << " faces do not sew into a closed shell (" << openShells
-            << " open shells: faces missing or apart; close them in a CAD tool)";
+        msg << fileName << ": no solid in the file, and ";
+        if (fileFaces == 0)
+        {
+          // OCCT's asahi.brep: curves only
+          msg << "no faces either (only curves or points): nothing encloses a volume";
+        }
+        else
+        {
+          msg << "its " << fileFaces << " faces do not sew into a closed shell (" << openShells
+              << " open shells: faces missing or apart; close them in a CAD tool)";
+        }
         out.error = msg.str();
         return out;
       }
