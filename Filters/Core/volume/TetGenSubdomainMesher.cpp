@@ -979,12 +979,11 @@ bool contains(const std::vector<Triangle>& sorted, const Triangle& key)
 std::vector<Triangle> boundaryFaces(const TetMesh& mesh, Index below = -1)
 {
   std::vector<Triangle> faces;
-  for (const auto& v : mesh.tets)
+  for (const auto& t : mesh.tets)
   {
-    static const int corners[4][3] = { { 0, 1, 2 }, { 0, 1, 3 }, { 0, 2, 3 }, { 1, 2, 3 } };
-    for (const auto& f : corners)
+    for (const Triangle& f : outwardTetrahedronFaces(t))
     {
-      const Triangle key = sortedCorners(Triangle{ v[f[0]], v[f[1]], v[f[2]] });
+      const Triangle key = sortedCorners(f);
       if (below < 0 || key[2] < below)
       {
         faces.push_back(key);
