@@ -194,6 +194,33 @@ TEST(SelfIntersectionCheck, PatchIsCheckedOnlyAwayFromItsSplitCorners)
   EXPECT_FALSE(apart.intersects);
 }
 
+// The check's own manifold test (isOrientedManifold) lets a closed oriented
+// surface go straight to CGAL's mesh; anything else must take CGAL's soup
+// repair as before: one triangle turned the wrong way, and a fin (an edge
+// of three triangles) on an otherwise closed sphere. Were the fin taken for
+// a mesh, CGAL's mesh would not hold it and the check would not be made.
+TEST(SelfIntersectionCheck, SoupsThatAreNotOrientedMeshesAreStillChecked)
+{
+  const TriangleSurface ball = icosphere({ 0, 0, 0 }, 1.0, 2);
+  const SelfIntersectionReport plain = checkSelfIntersection(ball);
+  ASSERT_TRUE(plain.checked) << plain.note;
+  EXPECT_FALSE(plain.intersects);
+
+  TriangleSurface turned = ball;
+  std::swap(turned.triangles[7][1], turned.triangles[7][2]);
+  const SelfIntersectionReport oriented = checkSelfIntersection(turned);
+  ASSERT_TRUE(oriented.checked) << oriented.note;
+  EXPECT_FALSE(oriented.intersects);
+
+  TriangleSurface fin = ball;
+  const Triangle& t = fin.triangles[0];
+  fin.points.push_back(3.0 * (fin.points[t[0]] + fin.points[t[1]]));
+  fin.triangles.push_back({ t[0], t[1], static_cast<Index>(fin.points.size() - 1) });
+  const SelfIntersectionReport finned = checkSelfIntersection(fin);
+  ASSERT_TRUE(finned.checked) << finned.note;
+  EXPECT_TRUE(finned.intersects) << "CGAL splits the fin's edge, after which the fin touches the sphere there";
+}
+
 TEST(SurfaceInputCheck, FlippedTrianglesAndInsideOutSphereAreRepaired)
 {
   TriangleSurface ball = flipped(icosphere({ 0, 0, 0 }, 1.0, 2));

@@ -1,6 +1,7 @@
 #include "SurfaceInputCheck.h"
 
 #include "SelfIntersectionCheck.h"
+#include "UnionFind.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -38,26 +39,6 @@ std::uint64_t edgeKey(Index a, Index b, std::size_t pointCount)
   return static_cast<std::uint64_t>(lo) * static_cast<std::uint64_t>(pointCount) +
     static_cast<std::uint64_t>(hi);
 }
-
-struct UnionFind
-{
-  std::vector<std::size_t> parent;
-  explicit UnionFind(std::size_t n)
-    : parent(n)
-  {
-    std::iota(parent.begin(), parent.end(), std::size_t{ 0 });
-  }
-  std::size_t find(std::size_t x)
-  {
-    while (parent[x] != x)
-    {
-      parent[x] = parent[parent[x]];
-      x = parent[x];
-    }
-    return x;
-  }
-  void unite(std::size_t a, std::size_t b) { parent[find(a)] = find(b); }
-};
 
 // Edge use counts of a triangle set, keyed by the unordered edge.
 struct EdgeTable
