@@ -194,14 +194,30 @@ HalfSpaceMeasure::HalfSpaceMeasure(
       this->Regions.emplace_back(r, -1.0);
     }
   }
-  const std::vector<Index> points = cellPoints(c, cell);
+  // the range over the part's points, each seen once per triangle or
+  // region edge: a point met twice does not change it, and collecting them
+  // sorted (cellPoints) took half of predictedClearance, which builds this
+  // measure for every normal tried
   this->MinOffset = std::numeric_limits<double>::infinity();
   this->MaxOffset = -std::numeric_limits<double>::infinity();
-  for (Index p : points)
-  {
+  auto extend = [&](Index p) {
     const double d = dot(normal, c.points[p]);
     this->MinOffset = std::min(this->MinOffset, d);
     this->MaxOffset = std::max(this->MaxOffset, d);
+  };
+  for (std::size_t i : this->Triangles)
+  {
+    for (Index p : c.triangles[i])
+    {
+      extend(p);
+    }
+  }
+  for (const auto& region : this->Regions)
+  {
+    for (const auto& e : c.interfaces[region.first].edges)
+    {
+      extend(e[0]);
+    }
   }
   if (this->Criterion == BalanceCriterion::Nodes)
   {
