@@ -208,7 +208,7 @@ void Relaxer::buildAdjacency()
 {
   const std::size_t n = c.points.size(), nt = c.triangles.size();
   trianglesOf.assign(n, {});
-  std::vector<std::set<Index>> sets(n);
+  neighbours.assign(n, {});
   normals.resize(nt);
   for (std::size_t t = 0; t < nt; ++t)
   {
@@ -216,15 +216,17 @@ void Relaxer::buildAdjacency()
     for (int k = 0; k < 3; ++k)
     {
       trianglesOf[tri[k]].push_back(t);
-      sets[tri[k]].insert(tri[(k + 1) % 3]);
-      sets[tri[k]].insert(tri[(k + 2) % 3]);
+      neighbours[tri[k]].push_back(tri[(k + 1) % 3]);
+      neighbours[tri[k]].push_back(tri[(k + 2) % 3]);
     }
     normals[t] = normalized(cross(c.points[tri[1]] - c.points[tri[0]], c.points[tri[2]] - c.points[tri[0]]));
   }
-  neighbours.resize(n);
-  for (std::size_t v = 0; v < n; ++v)
+  // sorted and unique, as a set per point gave them (its nodes took 0.08 s
+  // of the relaxer on the 10 M ball at K = 2)
+  for (auto& around : neighbours)
   {
-    neighbours[v].assign(sets[v].begin(), sets[v].end());
+    std::sort(around.begin(), around.end());
+    around.erase(std::unique(around.begin(), around.end()), around.end());
   }
 }
 
@@ -752,13 +754,19 @@ bool Relaxer::relaxNode(Index v)
   target = (1.0 / static_cast<double>(along[v].size())) * target;
   const Vec3 start = c.points[v];
   const double before = worstAngle(v);
+  double current = before; // the worst angle where the node now is
   bool accepted = false;
   for (double step = options.relaxationFactor; step > options.relaxationFactor / 8; step *= 0.5)
   {
-    if (tryPosition(v, start + step * (target - start)) && worstAngle(v) >= before)
+    if (tryPosition(v, start + step * (target - start)))
     {
-      accepted = true;
-      break;
+      const double angle = worstAngle(v);
+      if (angle >= before)
+      {
+        accepted = true;
+        current = angle;
+        break;
+      }
     }
   }
   if (!accepted)
@@ -770,7 +778,6 @@ bool Relaxer::relaxNode(Index v)
   // improves). Where the worst angle around the node is still poor, try
   // short moves towards each neighbour (along the curve for sliding
   // nodes) and keep the one that raises the worst angle most.
-  const double current = worstAngle(v);
   if (current < kPoorAngleDegrees * kDegree)
   {
     const Vec3 from = c.points[v];
