@@ -565,8 +565,14 @@ struct TimeLimits
 // Limits: TetGen needs about 5 microseconds of processor time per
 // tetrahedron here (190,000 per second); a run gets 2 s plus 30 us per
 // expected tetrahedron (the volume estimate plus 4 per surface triangle),
-// six times that, and the wall clock the old generous 60 s plus 10 us
-// per tetrahedron, which only matters when the machine is swapping.
+// six times that, plus 0.4 ms per surface triangle, and the wall clock the
+// old generous 60 s plus 10 us per tetrahedron, which only matters when the
+// machine is swapping. The term per triangle is for slabs much thinner than
+// the size: under -Y TetGen's quality refinement makes slow progress there.
+// OCCT's MODERN_Table_1 at K = 16 (parallel planes), subdomain 11 (20,590
+// triangles, a slab 0.027 x the size thick) takes 11.7 s of refinement for
+// 30,564 tetrahedra (380 us each), and the 4.5 s the tetrahedra alone gave
+// stopped it in every input order and fall-back: the run failed.
 TimeLimits timeLimits(const TriangleSurface& s, const TetMeshingOptions& options, double volume)
 {
   double expectedVolume = 0;
@@ -577,7 +583,9 @@ TimeLimits timeLimits(const TriangleSurface& s, const TetMeshingOptions& options
   const double expectedTets = estimateTetMesh(std::fabs(expectedVolume), volume).tetrahedra +
     4.0 * static_cast<double>(s.triangles.size());
   TimeLimits limits;
-  limits.cpu = options.timeLimitSeconds > 0 ? options.timeLimitSeconds : 2.0 + 3e-5 * expectedTets;
+  limits.cpu = options.timeLimitSeconds > 0
+    ? options.timeLimitSeconds
+    : 2.0 + 3e-5 * expectedTets + 4e-4 * static_cast<double>(s.triangles.size());
   limits.wall = options.timeLimitSeconds > 0 ? options.timeLimitSeconds : 60.0 + 1e-5 * expectedTets;
   return limits;
 }
