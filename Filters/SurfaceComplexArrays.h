@@ -25,6 +25,7 @@ constexpr const char* MaximumImbalance = "MaximumImbalance";       // double
 constexpr const char* InputRepairs = "InputRepairs";               // strings: repairs of the input check
 constexpr const char* AlignedCuts = "AlignedCuts";                 // 2 ints: cuts turned parallel to an earlier line, and through it
 constexpr const char* TiltedCuts = "TiltedCuts";                   // int: cuts tilted to a clearer plane
+constexpr const char* FlatCrossingsRemoved = "FlatCrossingsRemoved"; // vtkIdType: contour points inside planar faces taken out
 constexpr const char* InputMeanEdgeLength = "InputMeanEdgeLength"; // double: the input surface's resolution
 // the cutter's SizeArray (SizeField.h): double x4 per sample (x, y, z, size), and the array's name
 constexpr const char* SizeFieldSamples = "SizeFieldSamples";

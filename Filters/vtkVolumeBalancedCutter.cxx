@@ -189,8 +189,8 @@ vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<
 }
 
 // The cutter's facts every later filter passes on: the balance criterion and
-// how far it was met, the cuts the alignment turned, what the input check
-// repaired (as warned).
+// how far it was met, the cuts the alignment turned or tilted, the contour
+// points taken out of planar faces, what the input check repaired (as warned).
 void addCutterFacts(vtkFieldData* fd, const ptm::DecompositionResult& result, const std::string& criterionName)
 {
   vtkNew<vtkStringArray> criterion;
@@ -208,6 +208,10 @@ void addCutterFacts(vtkFieldData* fd, const ptm::DecompositionResult& result, co
   tilted->SetName(ptm::arrays::TiltedCuts);
   tilted->InsertNextValue(result.tiltedCuts);
   fd->AddArray(tilted);
+  vtkNew<vtkIdTypeArray> flat; // FlatCrossingRemoval.h
+  flat->SetName(ptm::arrays::FlatCrossingsRemoved);
+  flat->InsertNextValue(static_cast<vtkIdType>(result.flatCrossingsRemoved));
+  fd->AddArray(flat);
   vtkNew<vtkStringArray> repairs;
   repairs->SetName(ptm::arrays::InputRepairs);
   for (const std::string& warning : result.warnings)
@@ -313,6 +317,15 @@ int vtkVolumeBalancedCutter::RequestData(
   run.Step(0.1, "Cutting");
   ptm::DecompositionOptions options = decompositionOptions(this, ptm::rankCount(controller), size);
   shareCutChecks(controller, run.Rank(), options);
+  if (cadFaces)
+  {
+    // contour points between two CAD faces stay, so each piece keeps its face
+    options.faceGroups.resize(static_cast<std::size_t>(cadFaces->GetNumberOfValues()));
+    for (vtkIdType i = 0; i < cadFaces->GetNumberOfValues(); ++i)
+    {
+      options.faceGroups[i] = cadFaces->GetValue(i);
+    }
+  }
   ptm::DecompositionResult result;
   bool threw = false;
   try

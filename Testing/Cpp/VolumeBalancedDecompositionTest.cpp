@@ -8,7 +8,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <limits>
 #include <map>
+#include <numeric>
 #include <thread>
 #include <stdexcept>
 #include <functional>
@@ -118,6 +122,33 @@ void checkDecomposition(const Case& k, int K, CutStrategy strategy, CutDirection
   }
   expectClosedSubdomains(c, label.str());
 }
+
+// A regular n-gon prism of radius r from z = 0 to z = h, the way CAD
+// exports walls: each side one rectangle split by one diagonal (bottom of
+// corner i to top of corner i + 1), the caps fans from their centres.
+TriangleSurface wallPrism(int n, double r, double h)
+{
+  TriangleSurface s;
+  const double pi = 3.14159265358979323846;
+  for (int i = 0; i < n; ++i)
+  {
+    const double a = 2 * pi * i / n;
+    s.points.push_back({ r * std::cos(a), r * std::sin(a), 0.0 });
+    s.points.push_back({ r * std::cos(a), r * std::sin(a), h });
+  }
+  const Index bottomCentre = 2 * n, topCentre = 2 * n + 1;
+  s.points.push_back({ 0, 0, 0 });
+  s.points.push_back({ 0, 0, h });
+  for (Index i = 0; i < n; ++i)
+  {
+    const Index b0 = 2 * i, t0 = 2 * i + 1, b1 = 2 * ((i + 1) % n), t1 = b1 + 1;
+    s.triangles.push_back({ b0, b1, t1 });
+    s.triangles.push_back({ b0, t1, t0 });
+    s.triangles.push_back({ bottomCentre, b1, b0 });
+    s.triangles.push_back({ topCentre, t0, t1 });
+  }
+  return s;
+}
 } // namespace
 
 class DecompositionCases : public ::testing::TestWithParam<std::tuple<int, CutStrategy>>
@@ -219,6 +250,92 @@ TEST(VolumeBalancedDecomposition, ParallelSlabsThinnerThanTheSizeWarnWithTheLarg
   options.numberOfSubdomains = 10;
   options.strategy = CutStrategy::RecursiveBisection; // parts are not slabs
   EXPECT_TRUE(thinSlabWarnings(decomposeVolumeBalanced(bar, options)).empty());
+}
+
+// Parallel planes across long thin wall triangles (FlatCrossingRemoval.h):
+// each plane crossed the diagonals the earlier cuts left in the walls nearer
+// a wall's edge than the last, down to points 0.001 of the wall's width
+// apart on CGAL's oblong. With the crossings inside the planar walls taken
+// out, the contours keep only points on the walls' edges (and where that
+// would make a triangle worse, a crossing), and the subdomains stay closed
+// with the same volumes.
+TEST(VolumeBalancedDecomposition, PlanesThroughLongWallTrianglesLeaveNoNeedlePoints)
+{
+  const int n = 24;
+  const TriangleSurface prism = wallPrism(n, 3.0, 26.0);
+  const double side = 2 * 3.0 * std::sin(3.14159265358979323846 / n);
+  for (int K : { 8, 16 })
+  {
+    DecompositionOptions options;
+    options.numberOfSubdomains = K;
+    options.strategy = CutStrategy::ParallelPlanes;
+    options.direction = CutDirection::Z;
+    const DecompositionResult r = decomposeVolumeBalanced(prism, options);
+    ASSERT_TRUE(r.ok) << r.error;
+    const SurfaceComplex& c = r.complex;
+    EXPECT_GT(r.flatCrossingsRemoved, 0u);
+    double shortest = std::numeric_limits<double>::infinity();
+    for (const InterfaceRegion& region : c.interfaces)
+    {
+      for (const DirectedEdge& e : region.edges)
+      {
+        shortest = std::min(shortest, norm(c.points[e[1]] - c.points[e[0]]));
+      }
+    }
+    std::cout << "[ figure ] prism of 24 walls " << side << " wide, K = " << K << " parallel planes: "
+              << r.flatCrossingsRemoved << " crossings taken out, shortest contour edge " << shortest / side
+              << " x the wall's width\n";
+    EXPECT_GT(shortest, 0.1 * side) << "K = " << K;
+    double sum = 0;
+    for (double v : r.subdomainVolume)
+    {
+      sum += v;
+    }
+    EXPECT_NEAR(sum / r.totalVolume, 1.0, 1e-12);
+    expectClosedSubdomains(c, "prism K = " + std::to_string(K));
+    for (int s = 0; s < K; ++s)
+    {
+      const SelfIntersectionReport crossing = checkSelfIntersection({ c.points, subdomainTriangles(c, s) });
+      EXPECT_FALSE(crossing.intersects) << "K = " << K << ": subdomain " << s;
+    }
+    // no point left unused
+    std::vector<char> used(c.points.size(), 0);
+    for (const Triangle& t : c.triangles)
+    {
+      for (Index v : t)
+      {
+        used[v] = 1;
+      }
+    }
+    EXPECT_EQ(std::count(used.begin(), used.end(), 0), 0) << "K = " << K;
+  }
+  // every input triangle a CAD face of its own: no crossing lies inside one
+  DecompositionOptions options;
+  options.numberOfSubdomains = 8;
+  options.strategy = CutStrategy::ParallelPlanes;
+  options.direction = CutDirection::Z;
+  options.faceGroups.resize(prism.triangles.size());
+  std::iota(options.faceGroups.begin(), options.faceGroups.end(), Index{ 0 });
+  const DecompositionResult separate = decomposeVolumeBalanced(prism, options);
+  ASSERT_TRUE(separate.ok) << separate.error;
+  // (crossings of the diagonals that cut pieces of one input triangle got still go)
+  std::set<Index> onDiagonals; // contour points on the walls' input diagonals, between their ends
+  for (const InterfaceRegion& region : separate.complex.interfaces)
+  {
+    for (const DirectedEdge& e : region.edges)
+    {
+      for (std::size_t t = 0; t < prism.triangles.size(); t += 4)
+      {
+        const Vec3 &a = prism.points[prism.triangles[t][0]], &b = prism.points[prism.triangles[t][2]];
+        const Vec3& x = separate.complex.points[e[0]];
+        if (distanceToSegment(x, a, b) < 1e-9 && norm(x - a) > 1e-9 && norm(x - b) > 1e-9)
+        {
+          onDiagonals.insert(e[0]);
+        }
+      }
+    }
+  }
+  EXPECT_EQ(onDiagonals.size(), static_cast<std::size_t>(n * 7)) << "one per wall and plane";
 }
 
 TEST(VolumeBalancedDecomposition, TorusThroughItsHoleGivesTwoLoopsOnOnePlane)

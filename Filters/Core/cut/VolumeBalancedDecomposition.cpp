@@ -1,5 +1,7 @@
 #include "VolumeBalancedDecomposition.h"
 
+#include "FlatCrossingRemoval.h"
+
 #include "InterfaceTriangulation.h"
 #include "SelfIntersectionCheck.h"
 
@@ -1394,6 +1396,7 @@ DecompositionResult decomposeVolumeBalanced(
     return result;
   }
   SurfaceComplex& c = result.complex;
+  const Index inputPoints = static_cast<Index>(c.points.size());
   Cutting cutting{ c, options, result, std::min(1e-6, 0.01 * options.balanceTolerance) };
   if (cutsByCost(options))
   {
@@ -1421,6 +1424,10 @@ DecompositionResult decomposeVolumeBalanced(
     cutting.leaves.push_back(0);
   }
   renumberParts(c, cutting.leaves, cutting.nextCell, K);
+  // within 1e-13 of the diagonal: 1000 x the rounding of a computed crossing,
+  // 10 x under the 1e-12 that output points may lie off the input
+  result.flatCrossingsRemoved =
+    removeFlatCrossings(c, inputPoints, 1e-13 * boundingBoxDiagonal(c.points), options.faceGroups);
   result.error = openInterfaceError(c);
   if (result.error.empty())
   {

@@ -67,6 +67,11 @@ struct DecompositionOptions
   // process checks every part.
   std::function<bool(int)> checksPart;
   std::function<int(int)> maxOverProcesses;
+  // Optional, per input triangle: the face it belongs to (the CAD face of a
+  // CAD reader's output). A contour point between triangles of two faces is
+  // never taken out (FlatCrossingRemoval.h), so every piece keeps its face.
+  // Empty: one face.
+  std::vector<Index> faceGroups;
 };
 
 // What a process gives maxOverProcesses when its check threw.
@@ -91,6 +96,7 @@ struct DecompositionResult
   int rejectedCuts = 0;                 // cuts whose parts crossed themselves, replaced by another
   int clearedPlanes = 0;                // cuts moved within the balance budget away from points (PlaneClearance)
   int tiltedCuts = 0;                   // cuts tilted to a clearer normal (tiltDegrees)
+  std::size_t flatCrossingsRemoved = 0; // contour points inside planar faces taken out (FlatCrossingRemoval.h)
 };
 
 // The input triangles may be unmerged (STL); `sourceFaces` of the result
