@@ -90,6 +90,15 @@ TEST(CADTessellation, IgesBearingDoesNotClose)
   EXPECT_NE(r.error.find("213 faces do not sew into a closed shell"), std::string::npos) << r.error;
 }
 
+TEST(CADTessellation, BrepOfOneOpenFaceSaysSo)
+{
+  // MAT.brep: a single face and no solid
+  REQUIRE_FILE(kData + "occ/MAT.brep");
+  const CADSurface r = readCADSurface(kData + "occ/MAT.brep", CADReadOptions());
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.error.find("its one face does not close into a shell"), std::string::npos) << r.error;
+}
+
 TEST(CADTessellation, FinerDeflectionGivesMoreTriangles)
 {
   REQUIRE_FILE(kData + "step/screw.step");

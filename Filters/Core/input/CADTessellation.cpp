@@ -253,6 +253,11 @@ CADSurface readCADSurface(const std::string& fileName, const CADReadOptions& opt
           // OCCT's asahi.brep: curves only
           msg << "no faces either (only curves or points): nothing encloses a volume";
         }
+        else if (fileFaces == 1)
+        {
+          // OCCT's MAT.brep: one open face
+          msg << "its one face does not close into a shell (faces are missing; close them in a CAD tool)";
+        }
         else
         {
           msg << "its " << fileFaces << " faces do not sew into a closed shell (" << openShells
