@@ -85,10 +85,12 @@ Collapser::Collapser(SurfaceComplex& complex, double tol, const std::vector<Inde
   }
 }
 
+// On one loop edge in and one out, of one region, on a loop that keeps
+// three points or more without it.
 bool Collapser::candidate(Index p) const
 {
   return loopDegree[p] == 2 && regionOf[p] >= 0 && prevOf[p] >= 0 && nextOf[p] >= 0 &&
-    prevOf[p] != nextOf[p] && !star[p].empty();
+    prevOf[p] != nextOf[p] && nextOf[nextOf[p]] != prevOf[p] && !star[p].empty();
 }
 
 // The face a triangle's input triangle belongs to (-1: none known).
