@@ -130,6 +130,7 @@ ptm::DecompositionOptions decompositionOptions(vtkVolumeBalancedCutter* f, int r
   options.alignmentAngleDegrees = f->GetPlaneAlignmentAngle();
   options.tiltDegrees = f->GetPlaneTiltAngle();
   options.inputCheck.checkSelfIntersections = f->GetCheckSelfIntersections() != 0;
+  options.removeFlatCrossings = f->GetRemoveFlatCrossings() != 0;
   options.inputCheck.selfIntersectionLimit = static_cast<std::size_t>(f->GetSelfIntersectionCheckLimit());
   return options;
 }
@@ -415,6 +416,7 @@ void vtkVolumeBalancedCutter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PlaneAlignmentAngle: " << this->PlaneAlignmentAngle << "\n";
   os << indent << "PlaneTiltAngle: " << this->PlaneTiltAngle << "\n";
   os << indent << "CheckSelfIntersections: " << this->CheckSelfIntersections << "\n";
+  os << indent << "RemoveFlatCrossings: " << this->RemoveFlatCrossings << "\n";
   os << indent << "SelfIntersectionCheckLimit: " << this->SelfIntersectionCheckLimit << "\n";
   os << indent << "SizeExpression: " << this->SizeExpression << "\n";
   os << indent << "SizeArray: " << this->SizeArray << "\n";

@@ -107,6 +107,15 @@ public:
   ///@}
 
   ///@{
+  /// After the cuts, take out the contour points that only mark where a plane
+  /// crossed an edge inside a planar face (default on; field data
+  /// FlatCrossingsRemoved). Off keeps every crossing, as before session 17.
+  vtkSetMacro(RemoveFlatCrossings, vtkTypeBool);
+  vtkGetMacro(RemoveFlatCrossings, vtkTypeBool);
+  vtkBooleanMacro(RemoveFlatCrossings, vtkTypeBool);
+  ///@}
+
+  ///@{
   /// Check the input for self-intersections with CGAL's exact predicates
   /// before cutting (default on). Other input checks always run.
   vtkSetMacro(CheckSelfIntersections, vtkTypeBool);
@@ -180,6 +189,7 @@ protected:
   double PlaneAlignmentAngle = 15.0;
   double PlaneTiltAngle = 10.0;
   vtkTypeBool CheckSelfIntersections = 1;
+  vtkTypeBool RemoveFlatCrossings = 1;
   vtkIdType SelfIntersectionCheckLimit = 2000000;
   std::string SizeExpression;
   std::string SizeArray;

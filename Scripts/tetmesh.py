@@ -60,6 +60,9 @@ def parse_arguments(argv):
     p.add_argument("--no-contour-subdivision", action="store_true",
                    help="keep the contours as the cut made them (default: their long edges are split at the size "
                    "before the interfaces are triangulated)")
+    p.add_argument("--keep-flat-crossings", action="store_true",
+                   help="keep every contour point of the cuts, also those inside planar faces (default: they "
+                   "are taken out, and the run is made again keeping them if TetGen fails)")
     p.add_argument("--no-boundary-refinement", action="store_true",
                    help="mesh the subdomain surfaces as they are (TetGen keeps every input sliver)")
     p.add_argument("--coplanar-tolerance", type=float, default=0.0,
@@ -174,6 +177,32 @@ def field_value(polydata, name):
     return float(array.GetValue(0)) if array is not None and array.GetNumberOfTuples() else None
 
 
+def keep_flat_crossings_if_tetgen_fails(run, errors, cutter, stages):
+    """Runs the stages after the cut. Where the volume meshing fails after the
+    cutter took contour points out of planar faces (FlatCrossingsRemoved),
+    TetGen may fail on the thin slabs that leaves and mesh them with the
+    crossings kept (OCCT's Top and Bottom at 32 parallel planes), so the
+    stages run once more from a cut that keeps them. Returns the first
+    failure's message when that happened, else None."""
+    try:
+        for stage, proxy in stages:
+            run(stage, proxy)
+        return None
+    except Failure as failure:
+        removed = field_value(cutter.GetClientSideObject().GetOutputDataObject(0), "FlatCrossingsRemoved")
+        if not str(failure).startswith("volume meshing failed") or not removed:
+            raise
+        sys.stderr.write("tetmesh: warning: %s; the cut had taken %d contour points out of planar faces: "
+                         "cutting again keeping them (--keep-flat-crossings)\n" % (failure, removed))
+        sys.stderr.flush()
+        del errors.messages[:]
+        cutter.RemoveFlatCrossings = 0
+        run("cut", cutter)
+        for stage, proxy in stages:
+            run(stage, proxy)
+        return str(failure)
+
+
 def main(argv):
     args = parse_arguments(argv)
     if not os.path.isfile(args.input):
@@ -224,7 +253,7 @@ def main(argv):
         BalanceCriterion=args.balance or (
             "PredictedCost" if args.size_expression or args.size_array else "Volume"),
         SizeExpression=args.size_expression, SizeArray=args.size_array, SizeSource=size_source,
-        MaximumSize=args.size))
+        MaximumSize=args.size, RemoveFlatCrossings=0 if args.keep_flat_crossings else 1))
     # rank 0's copy of the surface the cutter took (every rank asked for the whole)
     meshed = surface.GetClientSideObject().GetOutputDataObject(0)
     wrap_report = None
@@ -237,20 +266,20 @@ def main(argv):
         wrap_report["triangles"] = int(meshed.GetNumberOfPolys())
     if args.save_surface:
         write_off(meshed, args.save_surface)
-    interfaces = run("interface", simple.InterfaceTriangulator(Input=cutter, MaximumEdgeLength=args.size,
-                                                                 SizeExpression=args.size_expression,
-                                                                 SubdivideContours=0 if args.no_contour_subdivision
-                                                                 else 1))
-    relaxed = run("relax", simple.SurfaceRelaxer(Input=interfaces, NumberOfIterations=args.relax_iterations,
-                                                 Mode=args.relax_mode,
-                                                 MaximumSurfaceDeviation=args.max_surface_deviation))
+    interfaces = simple.InterfaceTriangulator(Input=cutter, MaximumEdgeLength=args.size,
+                                              SizeExpression=args.size_expression,
+                                              SubdivideContours=0 if args.no_contour_subdivision else 1)
+    relaxed = simple.SurfaceRelaxer(Input=interfaces, NumberOfIterations=args.relax_iterations, Mode=args.relax_mode,
+                                    MaximumSurfaceDeviation=args.max_surface_deviation)
     volume = args.size ** 3 / (6 * math.sqrt(2)) if args.size > 0 else 0.0
-    mesher = run("volume meshing", simple.ParallelTetMesher(
+    mesher = simple.ParallelTetMesher(
         Input=relaxed, RadiusEdgeRatio=args.radius_edge_ratio, MinimumDihedralAngle=args.min_dihedral,
         SliverRepairAngle=args.sliver_repair_angle,
         MaximumVolume=volume,
         BoundaryRefinement=0 if args.no_boundary_refinement else 1,
-        CoplanarTolerance=args.coplanar_tolerance, SizeExpression=args.size_expression))
+        CoplanarTolerance=args.coplanar_tolerance, SizeExpression=args.size_expression)
+    kept_crossings_after = keep_flat_crossings_if_tetgen_fails(
+        run, errors, cutter, [("interface", interfaces), ("relax", relaxed), ("volume meshing", mesher)])
 
     start = time.perf_counter()
     output = os.path.abspath(args.output)
@@ -298,6 +327,9 @@ def main(argv):
         "tetrahedra_per_rank": per_rank,
         "balance_max_over_mean": max(per_rank) / mean if mean > 0 else 0.0,
         "seconds": times,
+        "flat_crossings_removed": int(field_value(cutter.GetClientSideObject().GetOutputDataObject(0),
+                                                  "FlatCrossingsRemoved") or 0),
+        "kept_flat_crossings_after_failure": kept_crossings_after,
         "quality": {
             "minimum_dihedral_angle_degrees": minimum_dihedral,
             "share_below_10_degrees": below_10 / float(max(tets, 1)),

@@ -336,6 +336,13 @@ TEST(VolumeBalancedDecomposition, PlanesThroughLongWallTrianglesLeaveNoNeedlePoi
     }
   }
   EXPECT_EQ(onDiagonals.size(), static_cast<std::size_t>(n * 7)) << "one per wall and plane";
+  // and none taken out when the option is off
+  options.faceGroups.clear();
+  options.removeFlatCrossings = false;
+  const DecompositionResult kept = decomposeVolumeBalanced(prism, options);
+  ASSERT_TRUE(kept.ok) << kept.error;
+  EXPECT_EQ(kept.flatCrossingsRemoved, 0u);
+  EXPECT_GT(kept.complex.points.size(), separate.complex.points.size());
 }
 
 TEST(VolumeBalancedDecomposition, TorusThroughItsHoleGivesTwoLoopsOnOnePlane)

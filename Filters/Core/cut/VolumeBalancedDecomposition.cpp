@@ -1426,8 +1426,11 @@ DecompositionResult decomposeVolumeBalanced(
   renumberParts(c, cutting.leaves, cutting.nextCell, K);
   // within 1e-13 of the diagonal: 1000 x the rounding of a computed crossing,
   // 10 x under the 1e-12 that output points may lie off the input
-  result.flatCrossingsRemoved =
-    removeFlatCrossings(c, inputPoints, 1e-13 * boundingBoxDiagonal(c.points), options.faceGroups);
+  if (options.removeFlatCrossings)
+  {
+    result.flatCrossingsRemoved =
+      removeFlatCrossings(c, inputPoints, 1e-13 * boundingBoxDiagonal(c.points), options.faceGroups);
+  }
   result.error = openInterfaceError(c);
   if (result.error.empty())
   {

@@ -67,6 +67,9 @@ struct DecompositionOptions
   // process checks every part.
   std::function<bool(int)> checksPart;
   std::function<int(int)> maxOverProcesses;
+  // Take the contour points inside planar faces out again after the cuts
+  // (FlatCrossingRemoval.h); false keeps every crossing.
+  bool removeFlatCrossings = true;
   // Optional, per input triangle: the face it belongs to (the CAD face of a
   // CAD reader's output). A contour point between triangles of two faces is
   // never taken out (FlatCrossingRemoval.h), so every piece keeps its face.
