@@ -177,12 +177,13 @@ def field_value(polydata, name):
     return float(array.GetValue(0)) if array is not None and array.GetNumberOfTuples() else None
 
 
-def keep_flat_crossings_if_tetgen_fails(run, errors, cutter, stages):
+def keep_flat_crossings_if_tetgen_fails(run, errors, times, cutter, stages):
     """Runs the stages after the cut. Where the volume meshing fails after the
     cutter took contour points out of planar faces (FlatCrossingsRemoved),
     TetGen may fail on the thin slabs that leaves and mesh them with the
     crossings kept (OCCT's Top and Bottom at 32 parallel planes), so the
-    stages run once more from a cut that keeps them. Returns the first
+    stages run once more from a cut that keeps them (times["failed attempt"]:
+    the seconds of the cut and stages that failed). Returns the first
     failure's message when that happened, else None."""
     try:
         for stage, proxy in stages:
@@ -196,6 +197,7 @@ def keep_flat_crossings_if_tetgen_fails(run, errors, cutter, stages):
                          "cutting again keeping them (--keep-flat-crossings)\n" % (failure, removed))
         sys.stderr.flush()
         del errors.messages[:]
+        times["failed attempt"] = times.get("cut", 0.0) + sum(times.get(stage, 0.0) for stage, _ in stages)
         cutter.RemoveFlatCrossings = 0
         run("cut", cutter)
         for stage, proxy in stages:
@@ -279,7 +281,7 @@ def main(argv):
         BoundaryRefinement=0 if args.no_boundary_refinement else 1,
         CoplanarTolerance=args.coplanar_tolerance, SizeExpression=args.size_expression)
     kept_crossings_after = keep_flat_crossings_if_tetgen_fails(
-        run, errors, cutter, [("interface", interfaces), ("relax", relaxed), ("volume meshing", mesher)])
+        run, errors, times, cutter, [("interface", interfaces), ("relax", relaxed), ("volume meshing", mesher)])
 
     start = time.perf_counter()
     output = os.path.abspath(args.output)
