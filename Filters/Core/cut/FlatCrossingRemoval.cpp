@@ -8,7 +8,6 @@ namespace ptm
 {
 namespace
 {
-constexpr double kPi = 3.14159265358979323846;
 // A crossing this close to a neighbour on its contour, as a fraction of the
 // segment between its two neighbours, goes even where a triangle around
 // gets thinner: it is the short edge that the next planes' needles start
