@@ -46,7 +46,7 @@ struct Collapser
   void collapse(Index p, Index t);
   void rewireLoops();
   void dropDeadTriangles();
-  void dropUnusedPoints(Index firstCutPoint);
+  void dropRemovedPoints();
 };
 
 Collapser::Collapser(SurfaceComplex& complex, double tol, const std::vector<Index>& groups)
@@ -322,13 +322,14 @@ void Collapser::dropDeadTriangles()
   c.trianglePlanes.resize(c.trianglePlanes.empty() ? 0 : kept);
 }
 
-void Collapser::dropUnusedPoints(Index firstCutPoint)
+// Only points made by the cuts are ever removed, so the input's keep their indices.
+void Collapser::dropRemovedPoints()
 {
   std::vector<Index> newIndex(c.points.size(), -1);
   Index next = 0;
   for (std::size_t v = 0; v < c.points.size(); ++v)
   {
-    if (!removed[v] || static_cast<Index>(v) < firstCutPoint)
+    if (!removed[v])
     {
       c.points[next] = c.points[v];
       newIndex[v] = next++;
@@ -352,9 +353,9 @@ void Collapser::dropUnusedPoints(Index firstCutPoint)
 }
 
 // Lawson flips between coplanar triangles of one side (the same pair) and
-// one face, from
-// the triangles the collapses changed outwards: the fans a collapse leaves
-// become Delaunay in their plane, and the surface stays the same point set.
+// one face, from the triangles the collapses changed outwards: the fans a
+// collapse leaves become Delaunay in their plane, and the surface stays the
+// same point set.
 // Interface loop edges separate two sides, so they are never flipped.
 struct PlanarFlipper
 {
@@ -492,7 +493,7 @@ std::size_t removeFlatCrossings(
   collapser.rewireLoops();
   PlanarFlipper{ c, collapser.alive, tolerance, faceGroups, {} }.run(collapser.touched);
   collapser.dropDeadTriangles();
-  collapser.dropUnusedPoints(firstCutPoint);
+  collapser.dropRemovedPoints();
   return count;
 }
 } // namespace ptm
