@@ -41,14 +41,17 @@ inline void planeBasis(const Vec3& n, Vec3& e1, Vec3& e2)
   e2 = cross(n, e1);
 }
 
+// The angle at corner p of the triangle pqr, in radians.
+inline double cornerAngle(const Vec3& p, const Vec3& q, const Vec3& r)
+{
+  const Vec3 u = q - p, v = r - p;
+  return std::atan2(norm(cross(u, v)), dot(u, v));
+}
+
 // The smallest interior angle of the triangle abc, in radians.
 inline double triangleMinimumAngle(const Vec3& a, const Vec3& b, const Vec3& c)
 {
-  auto angle = [](const Vec3& p, const Vec3& q, const Vec3& r) {
-    const Vec3 u = q - p, v = r - p;
-    return std::atan2(norm(cross(u, v)), dot(u, v));
-  };
-  return std::min({ angle(a, b, c), angle(b, c, a), angle(c, a, b) });
+  return std::min({ cornerAngle(a, b, c), cornerAngle(b, c, a), cornerAngle(c, a, b) });
 }
 
 // The distance from p to the segment ab (a != b).

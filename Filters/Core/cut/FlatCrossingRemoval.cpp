@@ -420,12 +420,9 @@ bool PlanarFlipper::flip(const std::pair<Index, Index>& e, std::vector<std::pair
   }
   const Vec3 &pa = c.points[a], &pb = c.points[b], &px = c.points[x], &py = c.points[y];
   const Vec3 n = normalized(cross(pb - pa, px - pa));
-  auto angleAt = [](const Vec3& apex, const Vec3& u, const Vec3& v) {
-    return std::atan2(norm(cross(u - apex, v - apex)), dot(u - apex, v - apex));
-  };
   const bool coplanar = std::fabs(dot(py - pa, n)) <= tolerance;
   const bool convex = dot(cross(pa - px, py - px), n) > 0 && dot(cross(pb - py, px - py), n) > 0;
-  if (!coplanar || !convex || angleAt(px, pa, pb) + angleAt(py, pb, pa) <= kPi * (1 + 1e-12) ||
+  if (!coplanar || !convex || cornerAngle(px, pa, pb) + cornerAngle(py, pb, pa) <= kPi * (1 + 1e-12) ||
     std::min(triangleMinimumAngle(px, pa, py), triangleMinimumAngle(py, pb, px)) <=
       std::min(triangleMinimumAngle(pa, pb, px), triangleMinimumAngle(pb, pa, py)))
   {
