@@ -11,13 +11,10 @@
  * in both directions and put in field data (WrapToInputDistance,
  * InputToWrapDistance), with the absolute WrapAlpha and WrapOffset used.
  *
- * Collective: every rank asks its upstream for the whole surface, rank 0
- * alone wraps it (the wrap is serial CGAL and would cost the same on every
- * rank) and sends the result to the others, so the output does not depend on
- * the number of ranks. Piece 0 of a request gets the whole wrap, other pieces
- * are empty (as the OFF reader does). Failure on any rank fails every rank.
- * A re-execution for another piece with the same input and properties
- * reuses the last wrap (all ranks agree on that) instead of wrapping again.
+ * Collective, as ptm::runWholeSurfaceStage runs it: rank 0 alone wraps
+ * the whole surface and sends the wrap to the others, so the output does not
+ * depend on the number of ranks; piece 0 of a request gets the whole wrap;
+ * a re-execution with the same input and properties reuses the last wrap.
  */
 #ifndef vtkAlphaWrapFilter_h
 #define vtkAlphaWrapFilter_h
@@ -26,10 +23,9 @@
 #include "vtkPolyDataAlgorithm.h"
 
 class vtkMultiProcessController;
-class vtkAlphaWrapCache;
 namespace ptm
 {
-struct TriangleSurface;
+struct WholeSurfaceCache;
 }
 
 class PARALLELTETMESHERFILTERS_EXPORT vtkAlphaWrapFilter : public vtkPolyDataAlgorithm
@@ -72,12 +68,8 @@ protected:
   vtkMultiProcessController* Controller = nullptr;
 
 private:
-  // The last wrap and what it was made from: a new request for another
-  // piece re-executes the filter (ParaView asks for piece r of n, the cutter
-  // for piece 0 of 1), and must not wrap again (it made tetmesh's cut stage
-  // on the OCCT bottle 26 s instead of 0.7 s).
-  vtkAlphaWrapCache* Cache = nullptr;
-  bool Wrap(const ptm::TriangleSurface& whole); // collective; fills the cache
+  // The last wrap and what it was made from (WholeSurfaceStage.h).
+  ptm::WholeSurfaceCache* Cache = nullptr;
 
   vtkAlphaWrapFilter(const vtkAlphaWrapFilter&) = delete;
   void operator=(const vtkAlphaWrapFilter&) = delete;

@@ -1,78 +1,27 @@
 #include "AlphaWrap.h"
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/distance.h>
-#include <CGAL/Surface_mesh.h>
+#include "CgalSurfaceMesh.h"
+#include "SurfaceDistance.h"
+
 #include <CGAL/alpha_wrap_3.h>
 
 #include <chrono>
 #include <cmath>
 #include <exception>
-#include <iterator>
 #include <sstream>
 
 namespace ptm
 {
 namespace
 {
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using Mesh = CGAL::Surface_mesh<Point>;
+using Point = CgalKernel::Point_3;
 using Face = std::array<std::size_t, 3>;
-using CgalTriangle = Kernel::Triangle_3;
-using TriangleIterator = std::vector<CgalTriangle>::const_iterator;
-using Primitive = CGAL::AABB_triangle_primitive<Kernel, TriangleIterator>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
-namespace PMP = CGAL::Polygon_mesh_processing;
-
-// About this many samples per surface (CGAL's grid sampling gives up to
-// twice the estimate): on the coarse OCCT bottle (3,450 triangles, wrap of
-// 19,940) 74,000 + 328,000 samples, measured in 1.1 s against 3.0 s for the
-// wrap itself; counting the area alone gave 1.5 million samples and 3.9 s.
-constexpr double kMaximumSamples = 1.5e5;
-
-
-// Area and total edge length (every triangle's three edges): CGAL's grid
-// sampling puts about area / h^2 samples in the faces and length / h on the
-// edges (the CAD tessellations' long thin triangles make the second term the
-// larger: 1.5 million samples on the coarse OCCT bottle when only the area
-// was counted).
-struct Extent
-{
-  double area = 0;
-  double edges = 0;
-};
-
-Extent extentOf(const std::vector<CgalTriangle>& triangles)
-{
-  Extent e;
-  for (const CgalTriangle& t : triangles)
-  {
-    e.area += std::sqrt(std::max(0.0, t.squared_area()));
-    for (int k = 0; k < 3; ++k)
-    {
-      e.edges += std::sqrt(CGAL::squared_distance(t.vertex(k), t.vertex(k + 1)));
-    }
-  }
-  return e;
-}
-
-// The spacing h at which area / h^2 + edges / h = samples.
-double spacingFor(const Extent& e, double samples)
-{
-  const double x = (-e.edges + std::sqrt(e.edges * e.edges + 4 * e.area * samples)) / (2 * e.area);
-  return x > 0 ? 1.0 / x : 0.0;
-}
 
 struct Soup
 {
   std::vector<Point> points;
   std::vector<Face> faces;
-  std::vector<CgalTriangle> triangles;
-  Extent extent;
+  double area = 0;
 };
 
 // The usable triangles (finite points, three distinct indices in range).
@@ -96,56 +45,9 @@ Soup soupOf(const TriangleSurface& input, std::size_t& skipped)
     }
     soup.faces.push_back({ static_cast<std::size_t>(t[0]), static_cast<std::size_t>(t[1]),
       static_cast<std::size_t>(t[2]) });
-    soup.triangles.emplace_back(soup.points[t[0]], soup.points[t[1]], soup.points[t[2]]);
+    soup.area += 0.5 * norm(cross(input.points[t[1]] - input.points[t[0]], input.points[t[2]] - input.points[t[0]]));
   }
-  soup.extent = extentOf(soup.triangles);
   return soup;
-}
-
-// Largest distance from the samples to the triangles of the tree.
-double largestDistance(const std::vector<Point>& samples, const std::vector<CgalTriangle>& triangles)
-{
-  Tree tree(triangles.begin(), triangles.end());
-  tree.accelerate_distance_queries();
-  double worst = 0;
-  for (const Point& p : samples)
-  {
-    worst = std::max(worst, tree.squared_distance(p));
-  }
-  return std::sqrt(worst);
-}
-
-TriangleSurface surfaceOf(Mesh& mesh, std::vector<CgalTriangle>& triangles)
-{
-  mesh.collect_garbage();
-  TriangleSurface s;
-  s.points.reserve(mesh.number_of_vertices());
-  for (Mesh::Vertex_index v : mesh.vertices())
-  {
-    const Point& p = mesh.point(v);
-    s.points.push_back({ p.x(), p.y(), p.z() });
-  }
-  for (Mesh::Face_index f : mesh.faces())
-  {
-    Triangle t{};
-    int k = 0;
-    for (Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
-    {
-      if (k < 3)
-      {
-        t[k] = static_cast<Index>(v.idx());
-      }
-      ++k;
-    }
-    if (k == 3)
-    {
-      s.triangles.push_back(t);
-      triangles.emplace_back(mesh.point(Mesh::Vertex_index(static_cast<Mesh::size_type>(t[0]))),
-        mesh.point(Mesh::Vertex_index(static_cast<Mesh::size_type>(t[1]))),
-        mesh.point(Mesh::Vertex_index(static_cast<Mesh::size_type>(t[2]))));
-    }
-  }
-  return s;
 }
 } // namespace
 
@@ -169,7 +71,7 @@ AlphaWrapResult alphaWrapSurface(const TriangleSurface& input, const AlphaWrapOp
   Soup soup = soupOf(input, r.skippedTriangles);
   r.inputTriangles = soup.faces.size();
   const double diagonal = boundingBoxDiagonal(input.points);
-  if (soup.faces.empty() || !(diagonal > 0) || !(soup.extent.area > 0))
+  if (soup.faces.empty() || !(diagonal > 0) || !(soup.area > 0))
   {
     r.error = "there is nothing to wrap: the surface has no triangle with area";
     return r;
@@ -188,7 +90,7 @@ AlphaWrapResult alphaWrapSurface(const TriangleSurface& input, const AlphaWrapOp
   {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
-    Mesh wrap;
+    CgalMesh wrap;
     CGAL::alpha_wrap_3(soup.points, soup.faces, r.alpha, r.offset, wrap);
     const auto wrapped = Clock::now();
     r.wrapSeconds = std::chrono::duration<double>(wrapped - start).count();
@@ -197,20 +99,17 @@ AlphaWrapResult alphaWrapSurface(const TriangleSurface& input, const AlphaWrapOp
       r.error = "the alpha wrap came out empty";
       return r;
     }
-    std::vector<CgalTriangle> wrapTriangles;
-    r.surface = surfaceOf(wrap, wrapTriangles);
+    r.surface = surfaceOfMesh(wrap);
 
-    // Sample spacing: a tenth of alpha (the wrap's own resolution), widened
-    // so that neither surface gets more than about kMaximumSamples samples.
-    r.sampleSpacing = std::max({ r.alpha / 10.0, spacingFor(soup.extent, kMaximumSamples),
-      spacingFor(extentOf(wrapTriangles), kMaximumSamples) });
-    const auto sampling =
-      CGAL::parameters::use_grid_sampling(true).grid_spacing(r.sampleSpacing);
-    std::vector<Point> onWrap, onInput;
-    PMP::sample_triangle_mesh(wrap, std::back_inserter(onWrap), sampling);
-    PMP::sample_triangle_soup(soup.points, soup.faces, std::back_inserter(onInput), sampling);
-    r.wrapToInput = largestDistance(onWrap, soup.triangles);
-    r.inputToWrap = largestDistance(onInput, wrapTriangles);
+    // Sample spacing: a tenth of alpha (the wrap's own resolution), or wider
+    // for at most about 1.5e5 samples per surface: on the coarse OCCT bottle
+    // (3,450 triangles, wrap of 19,940) 74,000 + 328,000 samples, measured in
+    // 1.1 s against 3.0 s for the wrap itself; counting the area alone gave
+    // 1.5 million samples and 3.9 s.
+    const TwoSidedDistance d = sampledTwoSidedDistance(r.surface, input, r.alpha / 10.0, 1.5e5);
+    r.wrapToInput = d.firstToSecond;
+    r.inputToWrap = d.secondToFirst;
+    r.sampleSpacing = d.sampleSpacing;
     r.distanceSeconds = std::chrono::duration<double>(Clock::now() - wrapped).count();
   }
   catch (const std::bad_alloc&)
