@@ -62,5 +62,15 @@ constexpr const char* WrapToInputDistance = "WrapToInputDistance"; // largest, w
 constexpr const char* InputToWrapDistance = "InputToWrapDistance"; // largest, input to wrap
 constexpr const char* WrapSampleSpacing = "WrapSampleSpacing";     // the distances are exact to within this
 constexpr const char* WrapSeconds = "WrapSeconds";                 // wrapping and measuring, on rank 0
+
+// field data of vtkSurfaceRemesher's output (absolute lengths)
+constexpr const char* RemeshEdgeLength = "RemeshEdgeLength";           // the target edge length used
+constexpr const char* RemeshToInputDistance = "RemeshToInputDistance"; // largest, remeshed to input
+constexpr const char* InputToRemeshDistance = "InputToRemeshDistance"; // largest, input to remeshed
+constexpr const char* RemeshSampleSpacing = "RemeshSampleSpacing";     // the distances are exact to within this
+constexpr const char* RemeshVolumeChange = "RemeshVolumeChange";       // (V remeshed - V input) / V input
+constexpr const char* RemeshFeatureEdges = "RemeshFeatureEdges";       // input edges kept as feature lines
+constexpr const char* RemeshCorners = "RemeshCorners";                 // input points that did not move
+constexpr const char* RemeshSeconds = "RemeshSeconds";                 // remeshing and measuring, on rank 0
 } // namespace ptm::arrays
 #endif

@@ -3,14 +3,19 @@
     mpiexec -n N pvbatch Scripts/tetmesh.py INPUT -o OUT.pvtu [--subdomains K]
         [--size H] [--strategy RecursiveBisection|ParallelPlanes]
         [--direction Inertia|LongestExtent|X|Y|Z] [--json SUMMARY.json]
-        [--wrap [--wrap-alpha A] [--wrap-offset D]] [--solid I] [--cad-deflection F]
+        [--wrap [--wrap-alpha A] [--wrap-offset D]]
+        [--remesh [--remesh-edge-length L] [--remesh-feature-angle DEG] [--remesh-max-deviation F]]
+        [--solid I] [--cad-deflection F]
         [--cad-angular-deflection A] [--save-surface SURFACE.off]
 
 Reads any surface ParaView reads (STL, OFF, PLY, OBJ, VTP...) or the solids
 of a CAD file (STEP, IGES, BREP: the plugin's CAD Surface Reader, whose
 CADFaceId reaches OUT_boundary.pvtp), optionally wraps a dirty surface
 (open, non-manifold, self-intersecting) into a closed one (--wrap: Alpha
-Wrap, reporting how far the wrap strays from the input), runs
+Wrap, reporting how far the wrap strays from the input), optionally
+remeshes it into triangles of about one edge length keeping its sharp edges
+(--remesh: Surface Remesher, for CAD exports with long thin triangles; it
+moves the surface, and reports and bounds by how much), runs
 VolumeBalancedCutter, InterfaceTriangulator, SurfaceRelaxer and
 ParallelTetMesher, writes the pieces with ParaView's parallel writer
 (OUT.pvtu plus OUT_boundary.pvtp with the outer boundary triangles) and
@@ -78,6 +83,18 @@ def parse_arguments(argv):
                    help="--wrap: alpha, as a fraction of the bounding-box diagonal (default 0.01)")
     p.add_argument("--wrap-offset", type=float, default=1.0 / 3000,
                    help="--wrap: offset from the input, as a fraction of the diagonal (default 1/3000)")
+    p.add_argument("--remesh", action="store_true",
+                   help="remesh the surface first into triangles of about --remesh-edge-length (CGAL isotropic "
+                        "remeshing, sharp edges kept): for CAD exports with long thin triangles; moves the surface "
+                        "(reported, and bounded by --remesh-max-deviation)")
+    p.add_argument("--remesh-edge-length", type=float, default=0.0,
+                   help="--remesh: the edge length wanted (default: --size if given, else the input's "
+                        "mean edge length)")
+    p.add_argument("--remesh-feature-angle", type=float, default=30.0,
+                   help="--remesh: edges whose faces' normals differ by more (degrees) are kept (default 30)")
+    p.add_argument("--remesh-max-deviation", type=float, default=0.005,
+                   help="--remesh: largest distance allowed between the remeshed surface and the input, as a "
+                        "fraction of the bounding-box diagonal (default 0.005; 0: not bounded)")
     p.add_argument("--solid", type=int, default=-1,
                    help="CAD input: the solid to mesh, 0-based (default -1: all, as separate shells)")
     p.add_argument("--cad-deflection", type=float, default=1e-3,
@@ -241,9 +258,14 @@ def main(argv):
         reader.AngularDeflection = args.cad_angular_deflection
     run("read", reader)
     surface = reader
+    wrapper = remesher = None
     if args.wrap:
-        surface = run("wrap", simple.AlphaWrap(Input=reader, RelativeAlpha=args.wrap_alpha,
-                                               RelativeOffset=args.wrap_offset))
+        surface = wrapper = run("wrap", simple.AlphaWrap(Input=reader, RelativeAlpha=args.wrap_alpha,
+                                                         RelativeOffset=args.wrap_offset))
+    if args.remesh:
+        surface = remesher = run("remesh", simple.SurfaceRemesher(
+            Input=surface, TargetEdgeLength=args.remesh_edge_length or max(args.size, 0.0),
+            FeatureAngle=args.remesh_feature_angle, MaximumDeviation=args.remesh_max_deviation))
     size_source = None
     if args.size_source:
         size_source = simple.OpenDataFile(args.size_source)
@@ -258,14 +280,23 @@ def main(argv):
         MaximumSize=args.size, RemoveFlatCrossings=0 if args.keep_flat_crossings else 1))
     # rank 0's copy of the surface the cutter took (every rank asked for the whole)
     meshed = surface.GetClientSideObject().GetOutputDataObject(0)
-    wrap_report = None
-    if args.wrap:
-        wrap_report = {name: field_value(meshed, field) for name, field in (
+    wrap_report = remesh_report = None
+    if wrapper is not None:
+        wrapped = wrapper.GetClientSideObject().GetOutputDataObject(0)
+        wrap_report = {name: field_value(wrapped, field) for name, field in (
             ("alpha", "WrapAlpha"), ("offset", "WrapOffset"),
             ("largest_distance_wrap_to_input", "WrapToInputDistance"),
             ("largest_distance_input_to_wrap", "InputToWrapDistance"),
             ("sample_spacing", "WrapSampleSpacing"), ("seconds", "WrapSeconds"))}
-        wrap_report["triangles"] = int(meshed.GetNumberOfPolys())
+        wrap_report["triangles"] = int(wrapped.GetNumberOfPolys())
+    if remesher is not None:
+        remesh_report = {name: field_value(meshed, field) for name, field in (
+            ("edge_length", "RemeshEdgeLength"),
+            ("largest_distance_remeshed_to_input", "RemeshToInputDistance"),
+            ("largest_distance_input_to_remeshed", "InputToRemeshDistance"),
+            ("sample_spacing", "RemeshSampleSpacing"), ("volume_change_relative", "RemeshVolumeChange"),
+            ("feature_edges", "RemeshFeatureEdges"), ("corners", "RemeshCorners"), ("seconds", "RemeshSeconds"))}
+        remesh_report["triangles"] = int(meshed.GetNumberOfPolys())
     if args.save_surface:
         write_off(meshed, args.save_surface)
     interfaces = simple.InterfaceTriangulator(Input=cutter, MaximumEdgeLength=args.size,
@@ -350,6 +381,15 @@ def main(argv):
                   wrap_report["alpha"], wrap_report["offset"], wrap_report["triangles"],
                   wrap_report["largest_distance_wrap_to_input"], wrap_report["largest_distance_input_to_wrap"],
                   wrap_report["sample_spacing"]))
+    if remesh_report is not None:
+        summary["remesh"] = remesh_report
+        print("tetmesh: remeshed at edge length %.4g into %d triangles (%d feature edges kept, %d corners); "
+              "largest distance remeshed to input %.4g, input to remeshed %.4g (sampled every %.3g), "
+              "volume change %.3g" % (
+                  remesh_report["edge_length"], remesh_report["triangles"], remesh_report["feature_edges"],
+                  remesh_report["corners"], remesh_report["largest_distance_remeshed_to_input"],
+                  remesh_report["largest_distance_input_to_remeshed"], remesh_report["sample_spacing"],
+                  remesh_report["volume_change_relative"]))
     print("tetmesh: %d tetrahedra, %d points, %d subdomains on %d ranks (%s per rank)" % (
         summary["tetrahedra"], summary["points"], summary["subdomains"], ranks, subdomains_per_rank))
     print("tetmesh: balance max/mean tetrahedra per rank %.3f" % summary["balance_max_over_mean"])

@@ -77,6 +77,9 @@ def parse_arguments(argv):
                    help="pass --coplanar-tolerance to tetmesh.py: the boundary refinement merges nearly coplanar "
                    "input triangles as TetGen -p does (0.1 degrees is TetGen's own merge angle); the volume may "
                    "then change (reported), so the 1e-9 volume goal applies to the default (exact) mode only")
+    p.add_argument("--remesh", action="store_true",
+                   help="pass --remesh to tetmesh.py: the surface is remeshed at the run's size first (CGAL isotropic "
+                   "remeshing, sharp edges kept); it moves the surface, so the volume goal does not apply")
     return p.parse_args(argv)
 
 
@@ -163,6 +166,8 @@ def pipeline_run(surface, name, k, strategy, size, stats, args, plugin):
         command += ["--relax-iterations", str(args.relax_iterations)]
     if args.coplanar_tolerance is not None:
         command += ["--coplanar-tolerance", "%g" % args.coplanar_tolerance]
+    if args.remesh:
+        command += ["--remesh"]
     code, text, seconds = run_group(command, args.timeout, env=env)
     with open(os.path.join(rundir, "log.txt"), "w") as f:
         f.write(" ".join(command) + "\n" + text)
@@ -267,13 +272,20 @@ def count_ratio(good, s):
     return worst / ref if ref > 0 else (0.0 if worst == 0 else float("inf"))
 
 
-def summarize(results, serial, names, exact=True):
+def mode_name(arguments):
+    """The non-exact mode of a sweep, in words."""
+    if arguments.get("remesh"):
+        return "the surface remeshed at the run's size first (--remesh)"
+    return "nearly coplanar input triangles merged (--coplanar-tolerance)"
+
+
+def summarize(results, serial, names, exact=True, mode="nearly coplanar input triangles merged (--coplanar-tolerance)"):
     """exact: the runs were in the default (exact-geometry) mode, where the volume goal applies."""
     lines = []
     if not exact:
-        lines.append("Mode: nearly coplanar input triangles merged (--coplanar-tolerance); the volume goal "
+        lines.append("Mode: %s; the volume goal "
                      "(1e-9) is for the default mode only, so \"goals met\" here counts success, conformity "
-                     "and quality, and the volume error column shows what the merge changed.")
+                     "and quality, and the volume error column shows what the mode changed." % mode)
     runs = len(results)
     ok = [r for r in results if r["ok"]]
     conform = [r for r in ok if r.get("conformity", {}).get("conforming")]
@@ -342,8 +354,9 @@ def report_only(args):
         table.append(serial_row(name, serial[name]))
         table.append(serial_row(name, serial[name]["with_Y"], "serial TetGen, surface kept", "same bound"))
         table += [row(r, serial[name]) for r in results if r["surface"] == name]
-    exact = saved.get("arguments", {}).get("coplanar_tolerance") is None
-    text = "\n".join(table + [""] + summarize(results, serial, names, exact)) + "\n"
+    saved_args = saved.get("arguments", {})
+    exact = saved_args.get("coplanar_tolerance") is None and not saved_args.get("remesh")
+    text = "\n".join(table + [""] + summarize(results, serial, names, exact, mode_name(saved_args))) + "\n"
     with open(os.path.join(args.out, "results.md"), "w") as f:
         f.write(text)
     print(text)
@@ -378,7 +391,7 @@ def main(argv):
         len(names), ks, strategies, args.ranks, args.timeout, plugin), flush=True)
 
     results, serial = [], {}
-    exact = args.coplanar_tolerance is None
+    exact = args.coplanar_tolerance is None and not args.remesh
     json_path = os.path.join(args.out, "results.json")
     md_path = os.path.join(args.out, "results.md")
     header = ["| surface | K | strategy | run | conforming | tetrahedra | volume error | min dihedral | "
@@ -391,7 +404,7 @@ def main(argv):
         with open(json_path, "w") as f:
             json.dump({"arguments": vars(args), "plugin": plugin, "serial": serial, "runs": results}, f, indent=1)
         with open(md_path, "w") as f:
-            f.write("\n".join(table + [""] + summarize(results, serial, names, exact)) + "\n")
+            f.write("\n".join(table + [""] + summarize(results, serial, names, exact, mode_name(vars(args)))) + "\n")
 
     for name in names:
         surface = os.path.join(os.path.abspath(args.corpus), name + ".off")
@@ -414,7 +427,7 @@ def main(argv):
                 save()
         save()
     print("")
-    print("\n".join(summarize(results, serial, names, exact)))
+    print("\n".join(summarize(results, serial, names, exact, mode_name(vars(args)))))
     print("\nsweep: wrote %s and %s" % (md_path, json_path))
 
 

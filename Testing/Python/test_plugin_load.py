@@ -35,7 +35,8 @@ def main():
     assert "OFFSurfaceReader" in globals(), "LoadPlugin did not define OFFSurfaceReader"
     pxm = servermanager.ProxyManager()
     assert pxm.GetPrototypeProxy("sources", "OFFSurfaceReader") is not None, "no OFFSurfaceReader proxy"
-    for name in ("VolumeBalancedCutter", "InterfaceTriangulator", "SurfaceRelaxer", "ParallelTetMesher"):
+    for name in ("VolumeBalancedCutter", "InterfaceTriangulator", "SurfaceRelaxer", "ParallelTetMesher", "AlphaWrap",
+                 "SurfaceRemesher"):
         assert pxm.GetPrototypeProxy("filters", name) is not None, "no %s proxy" % name
 
     factory = servermanager.vtkSMProxyManager.GetProxyManager().GetReaderFactory()

@@ -1,0 +1,70 @@
+#ifndef PTM_ISOTROPIC_REMESHING_H
+#define PTM_ISOTROPIC_REMESHING_H
+// Remeshing the input surface into triangles of about one edge length, an
+// explicit mode that moves the surface (issue #18, the third way it names).
+//
+// CAD exports tessellate with long thin triangles (fans on cylinders and
+// fillets, needles a thousandth as wide as long). The default pipeline
+// keeps every input triangle exactly, so every plane that crosses a needle
+// leaves a contour edge as short as the needle is wide (1e-4 of a 2.4 edge
+// on OCCT's Top at K = 32), and TetGen meets those with flat tetrahedra or
+// fails. CGAL's isotropic remeshing (Polygon_mesh_processing::
+// isotropic_remeshing) replaces them with triangles of about
+// targetEdgeLength, its vertices projected back onto the input. Sharp edges
+// (faces meeting at more than featureAngleDegrees) are kept as polylines:
+// their vertices only slide along them, and the corners where such lines
+// meet or turn do not move at all. The rest of the surface moves by about
+// the sagitta of the new edges on curved faces, and more where the input has
+// features smaller than the edge length; so this reports, and bounds, how
+// far the remeshed surface is from the input in both directions (sampled,
+// SurfaceDistance.h) and the change of the enclosed volume.
+//
+// Contract: the input is a closed, oriented, edge-manifold triangle surface
+// (what the cutter's input check accepts; a soup is refused with a pointer
+// to AlphaWrap). The output is closed and oriented like the input; it fails
+// (nothing is handed on) if it crosses itself or strays further than
+// maximumDeviation after its halvings. Deterministic: the same input and options give the
+// same surface.
+#include "TriangleSurface.h"
+
+#include <string>
+#include <vector>
+
+namespace ptm
+{
+struct RemeshOptions
+{
+  // absolute; 0: the input's mean edge length (what the mesher's volume
+  // bound defaults to)
+  double targetEdgeLength = 0;
+  double featureAngleDegrees = 30;  // sharp edges: their faces' normals differ by more
+  int iterations = 3;               // CGAL's split, collapse, flip and smoothing rounds
+  double maximumDeviation = 0;      // bound on both distances / bounding-box diagonal; 0: not bounded
+  // Where the result strays beyond maximumDeviation or crosses itself, the
+  // edge length is halved and the input remeshed again, at most this often
+  // (the sagitta on curved faces falls about 4 x per halving).
+  int halvings = 2;
+};
+
+struct RemeshResult
+{
+  bool ok = false;
+  std::string error;
+  TriangleSurface surface;
+  double targetEdgeLength = 0;      // the one used (after halvings)
+  int attempts = 0;                 // remeshings made (1 + halvings used)
+  bool retryable = false;           // the failure was a deviation or a crossing (internal)
+  std::size_t featureEdges = 0;     // input edges kept as sharp-feature polylines
+  std::size_t corners = 0;          // input vertices that did not move
+  double remeshToInput = 0;         // largest distance from the new surface to the input
+  double inputToRemesh = 0;         // largest distance from the input to the new surface
+  double sampleSpacing = 0;         // the two distances are exact to within this
+  double boundingBoxDiagonal = 0;   // of the input
+  double volumeChange = 0;          // (V new - V input) / V input
+  double remeshSeconds = 0;
+  double distanceSeconds = 0;
+};
+
+RemeshResult remeshSurface(const TriangleSurface& input, const RemeshOptions& options);
+} // namespace ptm
+#endif
