@@ -14,7 +14,9 @@
  * onto the input. How far the result strays from the input is measured in
  * both directions and with the enclosed volume, put in field data
  * (RemeshToInputDistance, InputToRemeshDistance, RemeshVolumeChange, ...),
- * and bounded: beyond MaximumDeviation the filter fails and says by how much.
+ * and bounded: beyond MaximumDeviation the edge length is halved and the
+ * input remeshed again (at most 4 times), then the filter fails and says by
+ * how much.
  *
  * Collective, as ptm::runWholeSurfaceStage runs it: rank 0 alone remeshes
  * the whole surface and sends the result to the others, so the output does

@@ -42,8 +42,11 @@ struct RemeshOptions
   double maximumDeviation = 0;      // bound on both distances / bounding-box diagonal; 0: not bounded
   // Where the result strays beyond maximumDeviation or crosses itself, the
   // edge length is halved and the input remeshed again, at most this often
-  // (the sagitta on curved faces falls about 4 x per halving).
-  int halvings = 2;
+  // (the sagitta on curved faces falls about 4 x per halving). OCCT's Bottom
+  // at the corpus sweep's size, 270 for a part 216 across, needed more than
+  // two. A failed attempt at a large edge length is cheap (few triangles,
+  // and its measure stops at the first sample beyond the bound).
+  int halvings = 4;
 };
 
 struct RemeshResult
