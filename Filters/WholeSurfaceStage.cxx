@@ -1,10 +1,14 @@
 #include "WholeSurfaceStage.h"
 
+#include "CADFaceIds.h"
 #include "PipelineRequests.h"
 #include "PolyDataConversion.h"
 #include "RankCollectives.h"
+#include "SurfaceComplexArrays.h"
 
 #include "vtkAlgorithm.h"
+#include "vtkCellData.h"
+#include "vtkIdTypeArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
@@ -21,7 +25,7 @@ namespace
 // Rank 0 makes the surface, every rank gets it and its figures; false on
 // every rank if rank 0 failed.
 bool makeOnRankZero(vtkAlgorithm* filter, vtkMultiProcessController* controller, const WholeSurfaceStage& stage,
-  const TriangleSurface& whole, WholeSurfaceCache& cache)
+  const TriangleSurface& whole, const std::vector<long long>& cadFaceIds, WholeSurfaceCache& cache)
 {
   cache.valid = false;
   filter->SetProgressText(stage.progressText);
@@ -30,7 +34,7 @@ bool makeOnRankZero(vtkAlgorithm* filter, vtkMultiProcessController* controller,
   {
     try
     {
-      made = stage.make(whole);
+      made = stage.make(whole, cadFaceIds);
     }
     catch (const std::exception& e)
     {
@@ -49,6 +53,7 @@ bool makeOnRankZero(vtkAlgorithm* filter, vtkMultiProcessController* controller,
   }
   // rank 0's surface and figures to every rank (the others contribute nothing)
   cache.made = allGatherSurface(controller, made.surface);
+  cache.madeCADFaceIds = allGatherValues(controller, made.cadFaceIds);
   cache.figures = made.figures;
   cache.figures.resize(stage.figureNames.size(), 0.0);
   allReduceSum(controller, cache.figures);
@@ -67,7 +72,15 @@ int runWholeSurfaceStage(vtkAlgorithm* filter, vtkMultiProcessController* contro
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
   filter->SetProgressText("Gathering the surface");
-  const TriangleSurface whole = wholeSurfaceOnEveryRank(controller, triangleSurfaceFromPolyData(input));
+  const TriangleSurface local = triangleSurfaceFromPolyData(input);
+  const TriangleSurface whole = wholeSurfaceOnEveryRank(controller, local);
+  const vtkSmartPointer<vtkIdTypeArray> table =
+    gatherCADFaceTable(controller, input, local.triangles.size(), whole.triangles.size());
+  std::vector<long long> cadFaceIds;
+  for (vtkIdType t = 0; table && t < table->GetNumberOfTuples(); ++t)
+  {
+    cadFaceIds.push_back(table->GetValue(t));
+  }
   if (agreeAnyAborted(controller, filter))
   {
     return 1;
@@ -77,13 +90,24 @@ int runWholeSurfaceStage(vtkAlgorithm* filter, vtkMultiProcessController* contro
     ? 1
     : 0 };
   allReduceMin(controller, reuse);
-  if (reuse[0] == 0 && !makeOnRankZero(filter, controller, stage, whole, cache))
+  if (reuse[0] == 0 && !makeOnRankZero(filter, controller, stage, whole, cadFaceIds, cache))
   {
     return 0;
   }
   if (requestedPiece(outputVector->GetInformationObject(0)) == 0)
   {
     triangleSurfaceToPolyData(cache.made, output);
+    if (cache.madeCADFaceIds.size() == cache.made.triangles.size() && !cache.made.triangles.empty())
+    {
+      vtkNew<vtkIdTypeArray> ids;
+      ids->SetName(arrays::CADFaceId);
+      ids->SetNumberOfTuples(static_cast<vtkIdType>(cache.madeCADFaceIds.size()));
+      for (std::size_t t = 0; t < cache.madeCADFaceIds.size(); ++t)
+      {
+        ids->SetValue(static_cast<vtkIdType>(t), cache.madeCADFaceIds[t]);
+      }
+      output->GetCellData()->AddArray(ids);
+    }
   }
   for (std::size_t i = 0; i < stage.figureNames.size(); ++i)
   {

@@ -35,6 +35,7 @@ struct MadeSurface
   std::vector<std::string> warnings;
   TriangleSurface surface;
   std::vector<double> figures; // one value per name of WholeSurfaceStage::figureNames
+  std::vector<long long> cadFaceIds; // per triangle of `surface`, or empty
 };
 
 struct WholeSurfaceStage
@@ -43,7 +44,11 @@ struct WholeSurfaceStage
   const char* progressText = "";       // while rank 0 works
   std::vector<const char*> figureNames; // field data arrays of one double each
   std::vector<double> properties;      // the filter's property values: the cache key with the input
-  std::function<MadeSurface(const TriangleSurface&)> make;
+  // The input's CADFaceId per triangle of the whole surface (empty when it
+  // has none), and the made surface's in MadeSurface::cadFaceIds, which
+  // becomes its cell data CADFaceId (the cutter carries it to the mesher's
+  // boundary port).
+  std::function<MadeSurface(const TriangleSurface& whole, const std::vector<long long>& cadFaceIds)> make;
 };
 
 // The last result of a filter and what it was made from.
@@ -54,6 +59,7 @@ struct WholeSurfaceCache
   std::vector<double> properties;
   TriangleSurface made;
   std::vector<double> figures;
+  std::vector<long long> madeCADFaceIds;
 };
 
 // Collective; RequestData's return value (0 on a failure, reported on every

@@ -68,7 +68,7 @@ int vtkAlphaWrapFilter::RequestData(
   ptm::AlphaWrapOptions options;
   options.relativeAlpha = this->RelativeAlpha;
   options.relativeOffset = this->RelativeOffset;
-  stage.make = [options](const ptm::TriangleSurface& whole)
+  stage.make = [options](const ptm::TriangleSurface& whole, const std::vector<long long>&)
   {
     ptm::AlphaWrapResult wrap = ptm::alphaWrapSurface(whole, options);
     ptm::MadeSurface made;

@@ -74,12 +74,15 @@ int vtkSurfaceRemesher::RequestData(
   options.featureAngleDegrees = this->FeatureAngle;
   options.iterations = this->Iterations;
   options.maximumDeviation = this->MaximumDeviation;
-  stage.make = [options](const ptm::TriangleSurface& whole)
+  stage.make = [options](const ptm::TriangleSurface& whole, const std::vector<long long>& cadFaceIds)
   {
-    ptm::RemeshResult r = ptm::remeshSurface(whole, options);
+    ptm::RemeshOptions labelled = options;
+    labelled.faceLabels = cadFaceIds;
+    ptm::RemeshResult r = ptm::remeshSurface(whole, labelled);
     ptm::MadeSurface made;
     made.error = r.error;
     made.surface = std::move(r.surface);
+    made.cadFaceIds = std::move(r.faceLabels);
     made.figures = { r.targetEdgeLength, r.remeshToInput, r.inputToRemesh, r.sampleSpacing, r.volumeChange,
       static_cast<double>(r.featureEdges), static_cast<double>(r.corners), r.remeshSeconds + r.distanceSeconds };
     return made;

@@ -18,6 +18,9 @@
  * input remeshed again (at most 4 times), then the filter fails and says by
  * how much.
  *
+ * The input's cell data CADFaceId survives: borders between CAD faces are
+ * kept like sharp edges and every new triangle takes its face's id.
+ *
  * Collective, as ptm::runWholeSurfaceStage runs it: rank 0 alone remeshes
  * the whole surface and sends the result to the others, so the output does
  * not depend on the number of ranks; piece 0 of a request gets the whole

@@ -109,6 +109,39 @@ TEST(IsotropicRemeshing, BoxKeepsCornersAndVolumeExactly)
   EXPECT_GT(smallestAngleDegrees(r.surface), 25.0);
 }
 
+TEST(IsotropicRemeshing, FaceLabelsSurviveWithTheirBorders)
+{
+  // two labels meeting along x = 0.5, across flat faces: the border stays a
+  // line of edges and every new triangle keeps the label of its side
+  const TriangleSurface box = test::subdividedBox({ 0, 0, 0 }, { 1, 1, 1 }, 4);
+  RemeshOptions options;
+  options.targetEdgeLength = 0.07;
+  for (const Triangle& t : box.triangles)
+  {
+    const Vec3 c = (1.0 / 3.0) * (box.points[t[0]] + box.points[t[1]] + box.points[t[2]]);
+    options.faceLabels.push_back(c[0] < 0.5 ? 0 : 1);
+  }
+  const RemeshResult r = remeshSurface(box, options);
+  ASSERT_TRUE(r.ok) << r.error;
+  ASSERT_EQ(r.faceLabels.size(), r.surface.triangles.size());
+  std::size_t wrong = 0, ones = 0;
+  for (std::size_t i = 0; i < r.surface.triangles.size(); ++i)
+  {
+    const Triangle& t = r.surface.triangles[i];
+    const Vec3 c = (1.0 / 3.0) * (r.surface.points[t[0]] + r.surface.points[t[1]] + r.surface.points[t[2]]);
+    wrong += r.faceLabels[i] != (c[0] < 0.5 ? 0 : 1) ? 1 : 0;
+    ones += r.faceLabels[i] == 1 ? 1 : 0;
+  }
+  EXPECT_EQ(wrong, 0u);
+  EXPECT_GT(ones, r.surface.triangles.size() / 3);
+  EXPECT_GT(r.surface.triangles.size(), 10 * box.triangles.size());
+
+  options.faceLabels.pop_back();
+  const RemeshResult refused = remeshSurface(box, options);
+  ASSERT_FALSE(refused.ok);
+  EXPECT_NE(refused.error.find("face labels"), std::string::npos) << refused.error;
+}
+
 TEST(IsotropicRemeshing, DeviationBeyondTheBoundFailsWithTheFigures)
 {
   // a coarse sphere remeshed at a third of its radius moves by about the

@@ -22,6 +22,7 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 constexpr double kDistanceSamples = 4e5;
 using Vertex = CgalMesh::Vertex_index;
 using Edge = CgalMesh::Edge_index;
+using Face = CgalMesh::Face_index;
 
 // The input as a CGAL mesh; empty with `error` set if it is not a closed
 // oriented manifold one.
@@ -112,6 +113,28 @@ double meanEdgeLength(const TriangleSurface& s)
   return s.triangles.empty() ? 0.0 : sum / (3.0 * s.triangles.size());
 }
 
+// The labels on the faces (in the order of the input's triangles, as
+// polygon_soup_to_polygon_mesh added them), and every edge between two
+// labels kept like a sharp one.
+void keepLabelBorders(const CgalMesh& mesh, const std::vector<long long>& labels,
+  CgalMesh::Property_map<Face, long long>& label, CgalMesh::Property_map<Edge, bool>& sharp)
+{
+  std::size_t i = 0;
+  for (Face f : mesh.faces())
+  {
+    label[f] = i < labels.size() ? labels[i] : -1;
+    ++i;
+  }
+  for (Edge e : mesh.edges())
+  {
+    const auto h = mesh.halfedge(e);
+    if (label[mesh.face(h)] != label[mesh.face(mesh.opposite(h))])
+    {
+      sharp[e] = true;
+    }
+  }
+}
+
 double signedVolume(const TriangleSurface& s)
 {
   double v = 0;
@@ -185,7 +208,13 @@ void remeshOnce(CgalMesh mesh, const TriangleSurface& input, const RemeshOptions
   {
     auto sharp = mesh.add_property_map<Edge, bool>("e:ptm_sharp", false).first;
     auto corner = mesh.add_property_map<Vertex, bool>("v:ptm_corner", false).first;
+    auto label = mesh.add_property_map<Face, long long>("f:ptm_label", -1).first;
     PMP::detect_sharp_edges(mesh, options.featureAngleDegrees, sharp);
+    const bool labelled = !options.faceLabels.empty();
+    if (labelled)
+    {
+      keepLabelBorders(mesh, options.faceLabels, label, sharp);
+    }
     r.featureEdges = 0;
     for (Edge e : mesh.edges())
     {
@@ -195,14 +224,27 @@ void remeshOnce(CgalMesh mesh, const TriangleSurface& input, const RemeshOptions
     // Sliding the points of sharp edges along them (relax_constraints) moved
     // a CAD cylinder's rims inwards: 0.056 off the input at edge 0.25 on
     // radius 1, against 0.012 with them left where splits put them.
-    PMP::isotropic_remeshing(faces(mesh), options.targetEdgeLength, mesh,
-      CGAL::parameters::number_of_iterations(static_cast<unsigned int>(options.iterations))
-        .edge_is_constrained_map(sharp)
-        .vertex_is_constrained_map(corner)
-        .relax_constraints(false));
+    const auto parameters = CGAL::parameters::number_of_iterations(static_cast<unsigned int>(options.iterations))
+                              .edge_is_constrained_map(sharp)
+                              .vertex_is_constrained_map(corner)
+                              .relax_constraints(false);
+    if (labelled)
+    {
+      PMP::isotropic_remeshing(faces(mesh), options.targetEdgeLength, mesh, parameters.face_patch_map(label));
+    }
+    else
+    {
+      PMP::isotropic_remeshing(faces(mesh), options.targetEdgeLength, mesh, parameters);
+    }
+    r.surface = surfaceOfMesh(mesh); // garbage collected: faces in the order of its triangles
+    r.faceLabels.clear();
+    for (Face f : labelled ? mesh.faces() : CgalMesh::Face_range(mesh.faces_end(), mesh.faces_end()))
+    {
+      r.faceLabels.push_back(label[f]);
+    }
     mesh.remove_property_map(sharp);
     mesh.remove_property_map(corner);
-    r.surface = surfaceOfMesh(mesh);
+    mesh.remove_property_map(label);
   }
   catch (const std::bad_alloc&)
   {
@@ -242,6 +284,11 @@ RemeshResult remeshSurface(const TriangleSurface& input, const RemeshOptions& gi
   CgalMesh mesh;
   if (!r.error.empty() || !meshOf(input, mesh, r.error))
   {
+    return r;
+  }
+  if (!given.faceLabels.empty() && given.faceLabels.size() != input.triangles.size())
+  {
+    r.error = "the remeshing was given face labels for another number of triangles";
     return r;
   }
   RemeshOptions options = given;

@@ -47,6 +47,10 @@ struct RemeshOptions
   // two. A failed attempt at a large edge length is cheap (few triangles,
   // and its measure stops at the first sample beyond the bound).
   int halvings = 4;
+  // Per input triangle, a label to keep (its CAD face); empty: none. Edges
+  // between triangles of different labels are kept like sharp edges, and
+  // every new triangle takes the label of the face it was made in.
+  std::vector<long long> faceLabels;
 };
 
 struct RemeshResult
@@ -66,6 +70,7 @@ struct RemeshResult
   double volumeChange = 0;          // (V new - V input) / V input
   double remeshSeconds = 0;
   double distanceSeconds = 0;
+  std::vector<long long> faceLabels; // per triangle of `surface`, when options.faceLabels was given
 };
 
 RemeshResult remeshSurface(const TriangleSurface& input, const RemeshOptions& options);
