@@ -14,9 +14,9 @@
  * onto the input. How far the result strays from the input is measured in
  * both directions and with the enclosed volume, put in field data
  * (RemeshToInputDistance, InputToRemeshDistance, RemeshVolumeChange, ...),
- * and bounded: beyond MaximumDeviation the edge length is halved and the
- * input remeshed again (at most 4 times), then the filter fails and says by
- * how much.
+ * and bounded: beyond MaximumDeviation, or where the result crosses itself
+ * (walls thinner than the edge length), the edge length is halved and the
+ * input remeshed again (at most 6 times), then the filter fails and says why.
  *
  * The input's cell data CADFaceId survives: borders between CAD faces are
  * kept like sharp edges and every new triangle takes its face's id.

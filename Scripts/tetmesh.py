@@ -94,8 +94,8 @@ def parse_arguments(argv):
                    help="--remesh: edges whose faces' normals differ by more (degrees) are kept (default 30)")
     p.add_argument("--remesh-max-deviation", type=float, default=0.005,
                    help="--remesh: largest distance allowed between the remeshed surface and the input, as a "
-                        "fraction of the bounding-box diagonal (default 0.005; 0: not bounded); beyond it the "
-                        "edge length is halved, at most 4 times")
+                        "fraction of the bounding-box diagonal (default 0.005; 0: not bounded); beyond it, or where "
+                        "the result crosses itself, the edge length is halved, at most 6 times")
     p.add_argument("--solid", type=int, default=-1,
                    help="CAD input: the solid to mesh, 0-based (default -1: all, as separate shells)")
     p.add_argument("--cad-deflection", type=float, default=1e-3,

@@ -42,11 +42,13 @@ struct RemeshOptions
   double maximumDeviation = 0;      // bound on both distances / bounding-box diagonal; 0: not bounded
   // Where the result strays beyond maximumDeviation or crosses itself, the
   // edge length is halved and the input remeshed again, at most this often
-  // (the sagitta on curved faces falls about 4 x per halving). OCCT's Bottom
-  // at the corpus sweep's size, 270 for a part 216 across, needed more than
-  // two. A failed attempt at a large edge length is cheap (few triangles,
-  // and its measure stops at the first sample beyond the bound).
-  int halvings = 4;
+  // (the sagitta on curved faces falls about 4 x per halving, and walls
+  // thinner than about the edge length make it cross itself). OCCT's Top,
+  // a cover 171 across with walls about 4 thick, crosses itself at edge
+  // lengths 20, 10, 5 and 2.5 and not at 1.25; the corpus sweep's size for
+  // it is 154. A failed attempt at a large edge length is cheap (few
+  // triangles; its measure stops at the first sample beyond the bound).
+  int halvings = 6;
   // Per input triangle, a label to keep (its CAD face); empty: none. Edges
   // between triangles of different labels are kept like sharp edges, and
   // every new triangle takes the label of the face it was made in.
