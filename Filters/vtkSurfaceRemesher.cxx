@@ -55,6 +55,8 @@ int vtkSurfaceRemesher::RequestData(
   checks.Require(this->Iterations >= 1 && this->Iterations <= 100, "Iterations", "lie in [1, 100]", this->Iterations);
   checks.Require(this->MaximumDeviation >= 0 && this->MaximumDeviation <= 1, "MaximumDeviation",
     "lie in [0, 1] (a fraction of the bounding-box diagonal; 0: not bounded)", this->MaximumDeviation);
+  checks.Require(this->MaximumVolumeChange >= 0 && this->MaximumVolumeChange <= 1, "MaximumVolumeChange",
+    "lie in [0, 1] (relative; 0: not bounded)", this->MaximumVolumeChange);
   if (!checks.Ok())
   {
     vtkErrorMacro(<< checks.Message());
@@ -68,12 +70,13 @@ int vtkSurfaceRemesher::RequestData(
     ptm::arrays::InputToRemeshDistance, ptm::arrays::RemeshSampleSpacing, ptm::arrays::RemeshVolumeChange,
     ptm::arrays::RemeshFeatureEdges, ptm::arrays::RemeshCorners, ptm::arrays::RemeshSeconds };
   stage.properties = { this->TargetEdgeLength, this->FeatureAngle, static_cast<double>(this->Iterations),
-    this->MaximumDeviation };
+    this->MaximumDeviation, this->MaximumVolumeChange };
   ptm::RemeshOptions options;
   options.targetEdgeLength = this->TargetEdgeLength;
   options.featureAngleDegrees = this->FeatureAngle;
   options.iterations = this->Iterations;
   options.maximumDeviation = this->MaximumDeviation;
+  options.maximumVolumeChange = this->MaximumVolumeChange;
   stage.make = [options](const ptm::TriangleSurface& whole, const std::vector<long long>& cadFaceIds)
   {
     ptm::RemeshOptions labelled = options;
@@ -97,5 +100,6 @@ void vtkSurfaceRemesher::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
   os << indent << "Iterations: " << this->Iterations << "\n";
   os << indent << "MaximumDeviation: " << this->MaximumDeviation << "\n";
+  os << indent << "MaximumVolumeChange: " << this->MaximumVolumeChange << "\n";
   os << indent << "Controller: " << this->Controller << "\n";
 }

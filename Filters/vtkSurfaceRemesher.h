@@ -14,7 +14,7 @@
  * onto the input. How far the result strays from the input is measured in
  * both directions and with the enclosed volume, put in field data
  * (RemeshToInputDistance, InputToRemeshDistance, RemeshVolumeChange, ...),
- * and bounded: beyond MaximumDeviation, or where the result crosses itself
+ * and bounded: beyond MaximumDeviation or MaximumVolumeChange, or where the result crosses itself
  * (walls thinner than the edge length), the edge length is halved and the
  * input remeshed again (at most 6 times), then the filter fails and says why.
  *
@@ -74,6 +74,14 @@ public:
   ///@}
 
   ///@{
+  /// Largest change of the enclosed volume allowed, relative (default
+  /// 0.002); 0: not bounded. Beyond it the edge length is halved as for
+  /// MaximumDeviation.
+  vtkSetMacro(MaximumVolumeChange, double);
+  vtkGetMacro(MaximumVolumeChange, double);
+  ///@}
+
+  ///@{
   /// The controller (default: the global one).
   void SetController(vtkMultiProcessController*);
   vtkGetObjectMacro(Controller, vtkMultiProcessController);
@@ -91,6 +99,7 @@ protected:
   double FeatureAngle = 30.0;
   int Iterations = 3;
   double MaximumDeviation = 0.005;
+  double MaximumVolumeChange = 0.002;
   vtkMultiProcessController* Controller = nullptr;
 
 private:

@@ -4,7 +4,8 @@
         [--size H] [--strategy RecursiveBisection|ParallelPlanes]
         [--direction Inertia|LongestExtent|X|Y|Z] [--json SUMMARY.json]
         [--wrap [--wrap-alpha A] [--wrap-offset D]]
-        [--remesh [--remesh-edge-length L] [--remesh-feature-angle DEG] [--remesh-max-deviation F]]
+        [--remesh [--remesh-edge-length L] [--remesh-feature-angle DEG] [--remesh-max-deviation F]
+                  [--remesh-max-volume-change F]]
         [--solid I] [--cad-deflection F]
         [--cad-angular-deflection A] [--save-surface SURFACE.off]
 
@@ -96,6 +97,9 @@ def parse_arguments(argv):
                    help="--remesh: largest distance allowed between the remeshed surface and the input, as a "
                         "fraction of the bounding-box diagonal (default 0.005; 0: not bounded); beyond it, or where "
                         "the result crosses itself, the edge length is halved, at most 6 times")
+    p.add_argument("--remesh-max-volume-change", type=float, default=0.002,
+                   help="--remesh: largest change of the enclosed volume allowed, relative (default 0.002; 0: not "
+                        "bounded); beyond it the edge length is halved too")
     p.add_argument("--solid", type=int, default=-1,
                    help="CAD input: the solid to mesh, 0-based (default -1: all, as separate shells)")
     p.add_argument("--cad-deflection", type=float, default=1e-3,
@@ -266,7 +270,8 @@ def main(argv):
     if args.remesh:
         surface = remesher = run("remesh", simple.SurfaceRemesher(
             Input=surface, TargetEdgeLength=args.remesh_edge_length or max(args.size, 0.0),
-            FeatureAngle=args.remesh_feature_angle, MaximumDeviation=args.remesh_max_deviation))
+            FeatureAngle=args.remesh_feature_angle, MaximumDeviation=args.remesh_max_deviation,
+            MaximumVolumeChange=args.remesh_max_volume_change))
     size_source = None
     if args.size_source:
         size_source = simple.OpenDataFile(args.size_source)

@@ -178,6 +178,26 @@ TEST(IsotropicRemeshing, TooFarMeansAgainAtHalfTheEdgeLength)
   EXPECT_EQ(once.attempts, 1);
 }
 
+TEST(IsotropicRemeshing, VolumeChangeIsBoundedToo)
+{
+  // the cylinder at edge 0.25 loses 0.7 % of its volume (the first test)
+  const TriangleSurface input = cadCylinder(1.0, 3.0, 48);
+  RemeshOptions options;
+  options.targetEdgeLength = 0.25;
+  options.maximumVolumeChange = 2e-3;
+  options.halvings = 0;
+  const RemeshResult once = remeshSurface(input, options);
+  ASSERT_FALSE(once.ok);
+  EXPECT_NE(once.error.find("MaximumVolumeChange 0.002"), std::string::npos) << once.error;
+  EXPECT_LT(once.volumeChange, -2e-3);
+
+  options.halvings = 3;
+  const RemeshResult r = remeshSurface(input, options);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_GT(r.attempts, 1);
+  EXPECT_LE(std::fabs(r.volumeChange), 2e-3);
+}
+
 TEST(IsotropicRemeshing, OpenOrInvalidInputIsRefusedByName)
 {
   TriangleSurface open = test::subdividedBox({ 0, 0, 0 }, { 1, 1, 1 }, 2);

@@ -159,6 +159,10 @@ std::string optionError(const RemeshOptions& o)
   {
     return "the remeshing iterations must lie in [1, 100]";
   }
+  if (!(o.maximumVolumeChange >= 0) || !std::isfinite(o.maximumVolumeChange))
+  {
+    return "the remeshing maximum volume change must be 0 (not bounded) or positive";
+  }
   if (!(o.maximumDeviation >= 0) || !std::isfinite(o.maximumDeviation))
   {
     return "the remeshing maximum deviation must be 0 (not bounded) or positive";
@@ -260,6 +264,18 @@ void remeshOnce(CgalMesh mesh, const TriangleSurface& input, const RemeshOptions
   r.remeshSeconds += std::chrono::duration<double>(remeshed - start).count();
   const double v0 = signedVolume(input);
   r.volumeChange = v0 != 0 ? (signedVolume(r.surface) - v0) / v0 : 0;
+  r.remeshToInput = r.inputToRemesh = r.sampleSpacing = 0;
+  if (options.maximumVolumeChange > 0 && std::fabs(r.volumeChange) > options.maximumVolumeChange)
+  {
+    // known before any distance is measured
+    std::ostringstream msg;
+    msg << "remeshing at edge length " << options.targetEdgeLength << " changed the enclosed volume by "
+        << r.volumeChange << " (relative), more than MaximumVolumeChange " << options.maximumVolumeChange
+        << ": give a smaller target edge length, or allow more change";
+    r.error = msg.str();
+    r.retryable = true;
+    return;
+  }
   // More samples than the wrap's 1.5e5: the bound is checked on these
   // figures, and a CAD input's many short edges take most of the samples.
   // OCCT's Pump_Nut at edge 0.5 with 1.5e5: samples 0.78 apart, the remeshed

@@ -86,6 +86,16 @@ double largestDistance(const Soup& from, const Soup& to, double spacing, double 
   std::vector<Point> samples;
   PMP::sample_triangle_soup(from.points, from.faces, std::back_inserter(samples),
     CGAL::parameters::use_grid_sampling(true).grid_spacing(spacing));
+  // Also every corner, edge midpoint and centroid: where the grid is wider
+  // than the triangles (a CAD input's total edge length takes the samples),
+  // it hit little but corners. OCCT's hammer.iges remeshed at 103: the grid
+  // 85 apart, the remeshed surface "1e-11" from the input.
+  for (const CgalTriangle& t : from.triangles)
+  {
+    samples.push_back(t.vertex(0));
+    samples.push_back(CGAL::midpoint(t.vertex(0), t.vertex(1)));
+    samples.push_back(CGAL::centroid(t));
+  }
   Tree tree(to.triangles.begin(), to.triangles.end());
   tree.accelerate_distance_queries();
   double worst = 0;

@@ -5,7 +5,8 @@
 // report, since the surface they hand on is not the input.
 //
 // Both surfaces are sampled on CGAL's grids (faces and edges, the same
-// spacing on both) and every sample's distance to the other surface is
+// spacing on both) and at every triangle's corners, edge midpoints and
+// centroid, and every sample's distance to the other surface is
 // measured against an AABB tree of its triangles, so each figure is the true
 // largest distance to within the spacing. Triangles with a repeated corner
 // or a corner that does not exist are not sampled.
