@@ -33,5 +33,21 @@ struct TriangleSurface
   std::vector<Vec3> points;
   std::vector<Triangle> triangles;
 };
+
+// Mean length of the triangles' edges (an edge of two triangles counted
+// twice); 0 without triangles. The input's resolution, which the cutter
+// reports and the remesher and the mesher's volume bound default to.
+inline double meanEdgeLength(const TriangleSurface& surface)
+{
+  double edgeSum = 0;
+  for (const Triangle& t : surface.triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      edgeSum += norm(surface.points[t[(k + 1) % 3]] - surface.points[t[k]]);
+    }
+  }
+  return surface.triangles.empty() ? 0.0 : edgeSum / (3.0 * static_cast<double>(surface.triangles.size()));
+}
 } // namespace ptm
 #endif

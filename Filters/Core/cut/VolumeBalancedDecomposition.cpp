@@ -91,20 +91,6 @@ std::vector<double> measureSubdomains(const SurfaceComplex& c, BalanceCriterion 
   return m;
 }
 
-// Mean length of the triangles' edges (an edge of two triangles counted twice).
-double meanEdgeLength(const TriangleSurface& surface)
-{
-  double edgeSum = 0;
-  for (const auto& t : surface.triangles)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      edgeSum += norm(surface.points[t[(k + 1) % 3]] - surface.points[t[k]]);
-    }
-  }
-  return edgeSum / (3.0 * static_cast<double>(surface.triangles.size()));
-}
-
 // Why the options cannot be used, or empty.
 std::string optionError(const DecompositionOptions& options)
 {

@@ -96,23 +96,6 @@ std::size_t markCorners(const CgalMesh& mesh, const CgalMesh::Property_map<Edge,
   return corners;
 }
 
-// The automatic target: the input's mean edge length, the size the
-// mesher's volume bound defaults to. (The edge of the mean triangle area was
-// tried first: on OCCT's Pump_Nut, whose needles have almost no area, it
-// asked for 0.64 and made 45,512 triangles of a 2,000-triangle part.)
-double meanEdgeLength(const TriangleSurface& s)
-{
-  double sum = 0;
-  for (const Triangle& t : s.triangles)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      sum += norm(s.points[t[(k + 1) % 3]] - s.points[t[k]]);
-    }
-  }
-  return s.triangles.empty() ? 0.0 : sum / (3.0 * s.triangles.size());
-}
-
 // The labels on the faces (in the order of the input's triangles, as
 // polygon_soup_to_polygon_mesh added them), and every edge between two
 // labels kept like a sharp one.
@@ -310,6 +293,9 @@ RemeshResult remeshSurface(const TriangleSurface& input, const RemeshOptions& gi
   RemeshOptions options = given;
   if (options.targetEdgeLength == 0)
   {
+    // the size the mesher's volume bound defaults to. (The edge of the mean
+    // triangle area was tried first: on OCCT's Pump_Nut.brep, whose needles
+    // have almost no area, it asked for 0.64 and made 45,512 triangles.)
     options.targetEdgeLength = meanEdgeLength(input);
   }
   r.boundingBoxDiagonal = boundingBoxDiagonal(input.points);
