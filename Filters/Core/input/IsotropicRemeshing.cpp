@@ -225,9 +225,12 @@ void remeshOnce(CgalMesh mesh, const TriangleSurface& input, const RemeshOptions
     }
     r.surface = surfaceOfMesh(mesh); // garbage collected: faces in the order of its triangles
     r.faceLabels.clear();
-    for (Face f : labelled ? mesh.faces() : CgalMesh::Face_range(mesh.faces_end(), mesh.faces_end()))
+    if (labelled)
     {
-      r.faceLabels.push_back(label[f]);
+      for (Face f : mesh.faces())
+      {
+        r.faceLabels.push_back(label[f]);
+      }
     }
     mesh.remove_property_map(sharp);
     mesh.remove_property_map(corner);
