@@ -43,6 +43,15 @@ TriangleSurface cadCylinder(double radius, double height, int n)
   return s;
 }
 
+// 3e4 grid samples per surface instead of 4e5: enough for these small
+// surfaces, and the cylinder's needles make every sample slow
+RemeshOptions testOptions()
+{
+  RemeshOptions options;
+  options.distanceSamples = 3e4;
+  return options;
+}
+
 double smallestAngleDegrees(const TriangleSurface& s)
 {
   double smallest = 180;
@@ -57,7 +66,7 @@ TEST(IsotropicRemeshing, CADCylinderLosesItsNeedlesAndKeepsItsRims)
 {
   const TriangleSurface input = cadCylinder(1.0, 3.0, 48);
   ASSERT_LT(smallestAngleDegrees(input), 4.0) << "the input has needles";
-  RemeshOptions options;
+  RemeshOptions options = testOptions();
   options.targetEdgeLength = 0.25;
   options.maximumDeviation = 0.01;
   const RemeshResult r = remeshSurface(input, options);
@@ -95,7 +104,7 @@ TEST(IsotropicRemeshing, CADCylinderLosesItsNeedlesAndKeepsItsRims)
 TEST(IsotropicRemeshing, BoxKeepsCornersAndVolumeExactly)
 {
   const TriangleSurface box = test::subdividedBox({ 0, 0, 0 }, { 2, 1, 1 }, 3);
-  RemeshOptions options;
+  RemeshOptions options = testOptions();
   options.targetEdgeLength = 0.1;
   const RemeshResult r = remeshSurface(box, options);
   ASSERT_TRUE(r.ok) << r.error;
@@ -114,7 +123,7 @@ TEST(IsotropicRemeshing, FaceLabelsSurviveWithTheirBorders)
   // two labels meeting along x = 0.5, across flat faces: the border stays a
   // line of edges and every new triangle keeps the label of its side
   const TriangleSurface box = test::subdividedBox({ 0, 0, 0 }, { 1, 1, 1 }, 4);
-  RemeshOptions options;
+  RemeshOptions options = testOptions();
   options.targetEdgeLength = 0.07;
   for (const Triangle& t : box.triangles)
   {
@@ -146,7 +155,7 @@ TEST(IsotropicRemeshing, DeviationBeyondTheBoundFailsWithTheFigures)
 {
   // a coarse sphere remeshed at a third of its radius moves by about the
   // sagitta of those edges
-  RemeshOptions options;
+  RemeshOptions options = testOptions();
   options.targetEdgeLength = 0.3;
   options.maximumDeviation = 1e-4;
   options.halvings = 0;
@@ -163,7 +172,7 @@ TEST(IsotropicRemeshing, TooFarMeansAgainAtHalfTheEdgeLength)
   // the cylinder at edge 0.25 strays about 0.012 (the first test); a bound
   // of 0.006 / diagonal is met only at a quarter of that
   const TriangleSurface input = cadCylinder(1.0, 3.0, 48);
-  RemeshOptions options;
+  RemeshOptions options = testOptions();
   options.targetEdgeLength = 0.25;
   options.maximumDeviation = 0.006 / boundingBoxDiagonal(input.points);
   const RemeshResult r = remeshSurface(input, options);
@@ -182,7 +191,7 @@ TEST(IsotropicRemeshing, VolumeChangeIsBoundedToo)
 {
   // the cylinder at edge 0.25 loses 0.7 % of its volume (the first test)
   const TriangleSurface input = cadCylinder(1.0, 3.0, 48);
-  RemeshOptions options;
+  RemeshOptions options = testOptions();
   options.targetEdgeLength = 0.25;
   options.maximumVolumeChange = 2e-3;
   options.halvings = 0;
@@ -202,7 +211,7 @@ TEST(IsotropicRemeshing, OpenOrInvalidInputIsRefusedByName)
 {
   TriangleSurface open = test::subdividedBox({ 0, 0, 0 }, { 1, 1, 1 }, 2);
   open.triangles.pop_back();
-  RemeshOptions options;
+  RemeshOptions options = testOptions();
   options.targetEdgeLength = 0.2;
   RemeshResult r = remeshSurface(open, options);
   ASSERT_FALSE(r.ok);

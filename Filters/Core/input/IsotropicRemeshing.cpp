@@ -19,7 +19,6 @@ namespace ptm
 namespace
 {
 namespace PMP = CGAL::Polygon_mesh_processing;
-constexpr double kDistanceSamples = 4e5;
 using Vertex = CgalMesh::Vertex_index;
 using Edge = CgalMesh::Edge_index;
 using Face = CgalMesh::Face_index;
@@ -141,6 +140,10 @@ std::string optionError(const RemeshOptions& o)
   if (o.iterations < 1 || o.iterations > 100)
   {
     return "the remeshing iterations must lie in [1, 100]";
+  }
+  if (!(o.distanceSamples >= 1) || !std::isfinite(o.distanceSamples))
+  {
+    return "the remeshing distance samples must be at least 1";
   }
   if (!(o.maximumVolumeChange >= 0) || !std::isfinite(o.maximumVolumeChange))
   {
@@ -270,7 +273,7 @@ void remeshOnce(CgalMesh mesh, const TriangleSurface& input, const RemeshOptions
   // the first sample that shows it.
   const double bound = options.maximumDeviation > 0 ? options.maximumDeviation * r.boundingBoxDiagonal : HUGE_VAL;
   const TwoSidedDistance d =
-    sampledTwoSidedDistance(r.surface, input, options.targetEdgeLength / 10.0, kDistanceSamples, bound);
+    sampledTwoSidedDistance(r.surface, input, options.targetEdgeLength / 10.0, options.distanceSamples, bound);
   r.remeshToInput = d.firstToSecond;
   r.inputToRemesh = d.secondToFirst;
   r.sampleSpacing = d.sampleSpacing;
