@@ -156,10 +156,10 @@ std::string optionError(const RemeshOptions& o)
   return "";
 }
 
-// The checks the remeshed surface must pass before it is handed on.
-std::string resultError(RemeshResult& r, const RemeshOptions& o)
+// The checks the remeshed surface must pass before it is handed on (a
+// smaller edge length may pass them all).
+std::string resultError(const RemeshResult& r, const RemeshOptions& o)
 {
-  r.retryable = true;
   std::ostringstream msg;
   const double worst = std::max(r.remeshToInput, r.inputToRemesh);
   if (o.maximumDeviation > 0 && worst > o.maximumDeviation * r.boundingBoxDiagonal)
@@ -180,16 +180,15 @@ std::string resultError(RemeshResult& r, const RemeshOptions& o)
            "target edge length";
     return msg.str();
   }
-  r.retryable = false;
   return "";
 }
-} // namespace
 
-namespace
-{
-// One remeshing of `mesh` (a copy of the input) at options.targetEdgeLength,
-// measured and checked; r.error set on a failure.
-void remeshOnce(CgalMesh mesh, const TriangleSurface& input, const RemeshOptions& options, RemeshResult& r)
+// One remeshing of `mesh` (a copy of the input, enclosing `inputVolume`) at
+// options.targetEdgeLength, measured and checked; r.error set on a failure.
+// Returns whether a smaller edge length may help (a bound or a crossing, not
+// an exception).
+bool remeshOnce(
+  CgalMesh mesh, const TriangleSurface& input, double inputVolume, const RemeshOptions& options, RemeshResult& r)
 {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
@@ -242,17 +241,16 @@ void remeshOnce(CgalMesh mesh, const TriangleSurface& input, const RemeshOptions
   catch (const std::bad_alloc&)
   {
     r.error = "out of memory while remeshing (a larger target edge length needs less)";
-    return;
+    return false;
   }
   catch (const std::exception& e)
   {
     r.error = std::string("the isotropic remeshing failed: ") + e.what();
-    return;
+    return false;
   }
   const auto remeshed = Clock::now();
   r.remeshSeconds += std::chrono::duration<double>(remeshed - start).count();
-  const double v0 = signedVolume(input);
-  r.volumeChange = v0 != 0 ? (signedVolume(r.surface) - v0) / v0 : 0;
+  r.volumeChange = inputVolume != 0 ? (signedVolume(r.surface) - inputVolume) / inputVolume : 0;
   r.remeshToInput = r.inputToRemesh = r.sampleSpacing = 0;
   if (options.maximumVolumeChange > 0 && std::fabs(r.volumeChange) > options.maximumVolumeChange)
   {
@@ -262,8 +260,7 @@ void remeshOnce(CgalMesh mesh, const TriangleSurface& input, const RemeshOptions
         << r.volumeChange << " (relative), more than MaximumVolumeChange " << options.maximumVolumeChange
         << ": give a smaller target edge length, or allow more change";
     r.error = msg.str();
-    r.retryable = true;
-    return;
+    return true;
   }
   // More samples than the wrap's 1.5e5: the bound is checked on these
   // figures, and a CAD input's many short edges take most of the samples.
@@ -279,6 +276,7 @@ void remeshOnce(CgalMesh mesh, const TriangleSurface& input, const RemeshOptions
   r.sampleSpacing = d.sampleSpacing;
   r.distanceSeconds += std::chrono::duration<double>(Clock::now() - remeshed).count();
   r.error = resultError(r, options);
+  return true;
 }
 } // namespace
 
@@ -305,11 +303,12 @@ RemeshResult remeshSurface(const TriangleSurface& input, const RemeshOptions& gi
     options.targetEdgeLength = meanEdgeLength(input);
   }
   r.boundingBoxDiagonal = boundingBoxDiagonal(input.points);
+  const double inputVolume = signedVolume(input);
   for (r.attempts = 1;; ++r.attempts, options.targetEdgeLength /= 2)
   {
     r.error.clear();
-    remeshOnce(mesh, input, options, r);
-    if (r.error.empty() || r.attempts > options.halvings || !r.retryable)
+    const bool retryable = remeshOnce(mesh, input, inputVolume, options, r);
+    if (r.error.empty() || r.attempts > options.halvings || !retryable)
     {
       break;
     }

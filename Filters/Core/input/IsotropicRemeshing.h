@@ -71,7 +71,6 @@ struct RemeshResult
   TriangleSurface surface;
   double targetEdgeLength = 0;      // the one used (after halvings)
   int attempts = 0;                 // remeshings made (1 + halvings used)
-  bool retryable = false;           // the failure was a deviation or a crossing (internal)
   std::size_t featureEdges = 0;     // input edges kept as sharp-feature polylines
   std::size_t corners = 0;          // input vertices that did not move
   double remeshToInput = 0;         // largest distance from the new surface to the input
