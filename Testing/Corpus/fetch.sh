@@ -3,7 +3,14 @@
 # Debian package and was modelled by someone outside this project; CAD models
 # are tessellated by their own tool (OpenSCAD, OpenCASCADE's incmesh, Gmsh).
 #
-#   bash Testing/Corpus/fetch.sh [OUT_DIR]        # default out/corpus
+#   bash Testing/Corpus/fetch.sh [OUT_DIR]            # default out/corpus
+#   bash Testing/Corpus/fetch.sh --unseen [OUT_DIR]   # default out/unseen
+#
+# --unseen builds a second set, never used to tune the pipeline: surfaces from
+# packages the main corpus does not touch (netgen-doc, prusa-slicer, cura,
+# freecad-common, openscad-testing-data, openscad-mcad). Those packages are
+# downloaded with apt-get download and unpacked under OUT_DIR/.work, not
+# installed.
 #
 # Writes OUT_DIR/NAME.off for every surface that is closed, edge- and
 # vertex-manifold, consistently oriented, encloses a positive volume and does
@@ -13,14 +20,18 @@
 # (single-threaded tessellators, fixed parameters, sorted lists).
 set -euo pipefail
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-OUT="${1:-out/corpus}"
+SET=main
+if [ "${1:-}" = "--unseen" ]; then SET=unseen; shift; fi
+DEFAULT_OUT=out/corpus
+[ "$SET" = unseen ] && DEFAULT_OUT=out/unseen
+OUT="${1:-$DEFAULT_OUT}"
 mkdir -p "$OUT"
 OUT="$(cd "$OUT" && pwd)"
 WORK="$OUT/.work"
-rm -rf "$WORK" "$OUT/dirty" "$OUT"/*.off
+rm -rf "$WORK/raw" "$OUT/dirty" "$OUT"/*.off
 mkdir -p "$WORK/raw" "$WORK/lib" "$OUT/dirty"
 
-PACKAGES="openscad occt-draw occt-misc libcgal-demo libcgal-dev gmsh gmsh-doc g++ libgmp-dev libmpfr-dev python3-numpy"
+PACKAGES="openscad occt-draw occt-misc libcgal-demo libcgal-dev gmsh gmsh-doc g++ libgmp-dev libmpfr-dev python3-numpy unzip"
 missing=""
 for p in $PACKAGES; do dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"; done
 if [ -n "$missing" ]; then
@@ -120,41 +131,114 @@ occt-stl-head|stl|$OCC/stl/head.stl|head (OCCT's sample STL)
 occt-stl-motor|stl|$OCC/stl/motor.stl|motor (OCCT's sample STL)
 "
 
+# The unseen set. Sources are PACKAGE:PATH inside the unpacked package; kinds
+# debstl (an STL as shipped), debocct (a STEP or BREP, or PATH:MEMBER for a
+# .brp inside a FreeCAD document, a zip; then the occt recipe), debscad
+# (openscad -o in the file's folder) and debscadline (PACKAGE:LIBRARY_DIR:a
+# one-line OpenSCAD program using that library).
+FC=freecad-common:/usr/share/freecad/Mod
+PS=prusa-slicer:/usr/share/PrusaSlicer
+OT=openscad-testing-data:/usr/share/openscad/testdata/scad
+MCAD='openscad-mcad:/usr/share/openscad/libraries:use <MCAD/involute_gears.scad>;'
+UNSEEN="
+netgen-frame|debocct|netgen-doc:/usr/share/doc/netgen/examples/frame.step|CAD frame (STEP), long thin triangles
+netgen-hinge|debstl|netgen-doc:/usr/share/doc/netgen/examples/hinge.stl|CAD hinge
+netgen-part1|debstl|netgen-doc:/usr/share/doc/netgen/examples/part1.stl|CAD part
+prusa-M3x10_screw|debstl|$PS/shapes/M3x10_screw.stl|threaded screw
+prusa-M3_hex_nut|debstl|$PS/shapes/M3_hex_nut.stl|hex nut (threaded hole)
+prusa-OTHER_recycling|debstl|$PS/shapes/OTHER_recycling_symbol.stl|embossed symbol with text
+prusa-cylinder|debstl|$PS/shapes/cylinder.stl|cylinder, every triangle under 10 deg
+prusa-torus|debstl|$PS/shapes/torus.stl|smooth torus
+prusa-bunny|debstl|$PS/shapes/bunny.stl|coarse scanned bunny
+prusa-cone|debstl|$PS/shapes/cone.stl|cone
+prusa-helper_disk|debstl|$PS/shapes/helper_disk.stl|thin disk
+prusa-rr-vc-300|debstl|$PS/profiles/RatRig/rr-vc-300.stl|printer bed plate with holes
+prusa-aq_bed|debstl|$PS/profiles/TriLAB/aq_bed.stl|thin printer bed sheet
+prusa-sl1_bed|debstl|$PS/profiles/PrusaResearch/sl1_bed.stl|printer bed
+prusa-ender3_bed|debstl|$PS/profiles/Creality/ender3_bed.stl|printer bed, min angle 0.001 deg
+cura-nozzle|debstl|cura:/usr/lib/cura/plugins/SimulationView/resources/nozzle.stl|print nozzle
+cura-tronxy|debstl|cura:/usr/share/cura/resources/meshes/tronxy.stl|printer bed model
+cura-BIQU_SSS|debstl|cura:/usr/share/cura/resources/meshes/BIQU_SSS.stl|printer bed
+freecad-CAP_50SGV|debocct|$FC/Idf/Idflibs/CAP_50SGV_8_10.stp|SMD capacitor, several solids
+freecad-TCMT1107_4|debocct|$FC/Idf/Idflibs/TCMT1107_4.stp|SMD package
+freecad-RLF_7030|debocct|$FC/Idf/Idflibs/RLF_7030.stp|SMD inductor
+freecad-Drilling_1|debocct|$FC/Path/PathTests/Drilling_1.FCStd:PartShape.brp|CAD block with drilled holes
+freecad-test_holes00|debocct|$FC/Path/PathTests/test_holes00.fcstd:PartShape.brp|plate with many holes
+freecad-thread-mill|debocct|$FC/Path/Tools/Shape/thread-mill.fcstd:PartShape.brp|revolved tool bit
+freecad-bullnose|debocct|$FC/Path/Tools/Shape/bullnose.fcstd:PartShape.brp|revolved tool bit
+oscadtest-rotate_extrude|debscad|$OT/3D/features/rotate_extrude-tests.scad|several rotate_extrude solids
+oscadtest-difference|debscad|$OT/3D/features/difference-tests.scad|CSG differences
+oscadtest-linear_extrude|debscad|$OT/3D/features/linear_extrude-tests.scad|linear extrusions
+mcad-gear|debscadline|$MCAD gear(number_of_teeth=17, circular_pitch=500, bore_diameter=5, hub_diameter=15, rim_width=5, hub_thickness=10, rim_thickness=8, gear_thickness=4, circles=5);|involute gear with holes
+mcad-bevel|debscadline|$MCAD test_bevel_gear();|bevel gear
+"
+[ "$SET" = unseen ] && CANDIDATES="$UNSEEN"
+
 tar xzf "$CGAL_DATA" -C "$WORK" data/meshes
 export LD_LIBRARY_PATH="$WORK/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 
-tessellate() {  # name kind source -> prints the raw file, or fails
-    local name="$1" kind="$2" src="$3" raw
-    case "$kind" in
-        cgal) raw="$WORK/$src" ;;
-        stl) raw="$WORK/raw/$name.stl"; gzip -dcf "$src" > "$raw" ;;
-        scad)
-            raw="$WORK/raw/$name.stl"
-            (cd "$(dirname "$src")" && timeout 300 openscad -o "$raw" "$src") >"$WORK/raw/$name.log" 2>&1 ;;
-        occt)
-            raw="$WORK/raw/$name.stl"
-            local read
-            case "$src" in
-                *.brep) read="restore $src s" ;;
-                *.step|*.stp) read="testreadstep $src s" ;;
-                *.iges|*.igs) read="igesbrep $src s *" ;;
-            esac
-            cat > "$WORK/raw/$name.tcl" <<TCL
+occt_mesh() {  # name model-file -> writes $WORK/raw/name.stl (OCCT's incmesh, then writestl)
+    local name="$1" model="$2" read
+    case "$model" in
+        *.brep|*.brp) read="restore $model s" ;;
+        *.step|*.stp) read="testreadstep $model s" ;;
+        *.iges|*.igs) read="igesbrep $model s *" ;;
+    esac
+    cat > "$WORK/raw/$name.tcl" <<TCL
 pload MODELING DATAEXCHANGE
 $read
 set b [bounding s]
 set d [expr sqrt(pow([lindex \$b 3]-[lindex \$b 0],2)+pow([lindex \$b 4]-[lindex \$b 1],2)+pow([lindex \$b 5]-[lindex \$b 2],2))]
 incmesh s [expr \$d/200.0] -a 20
-writestl s $raw 0
+writestl s $WORK/raw/$name.stl 0
 exit
 TCL
-            (cd "$WORK/raw" && timeout 300 occt-draw -b -f "$name.tcl" </dev/null) >"$WORK/raw/$name.log" 2>&1 ;;
+    (cd "$WORK/raw" && timeout 300 occt-draw -b -f "$name.tcl" </dev/null) >"$WORK/raw/$name.log" 2>&1
+}
+
+scad_mesh() {  # name scad-file -> writes $WORK/raw/name.stl (openscad in the file's folder)
+    (cd "$(dirname "$2")" && timeout 300 openscad -o "$WORK/raw/$1.stl" "$2") >"$WORK/raw/$1.log" 2>&1
+}
+
+deb_root() {  # package -> prints the folder it is unpacked in (downloaded once, not installed)
+    local pkg="$1" dir="$WORK/deb/$1"
+    if [ ! -e "$dir/.unpacked" ]; then
+        rm -rf "$dir" && mkdir -p "$WORK/debs" "$dir"
+        (cd "$WORK/debs" && apt-get download "$pkg") >"$WORK/debs/$pkg.log" 2>&1 || return 1
+        dpkg-deb -x "$(ls "$WORK/debs/${pkg}_"*.deb | head -n 1)" "$dir" && touch "$dir/.unpacked"
+    fi
+    echo "$dir"
+}
+
+tessellate() {  # name kind source -> prints the raw file, or fails
+    local name="$1" kind="$2" src="$3" raw="$WORK/raw/$1.stl" root rest
+    case "$kind" in
+        deb*)
+            root="$(deb_root "${src%%:*}")" || return 1
+            rest="${src#*:}" ;;
+    esac
+    case "$kind" in
+        cgal) raw="$WORK/$src" ;;
+        stl) gzip -dcf "$src" > "$raw" ;;
+        scad) scad_mesh "$name" "$src" ;;
+        occt) occt_mesh "$name" "$src" ;;
         gmsh)
-            raw="$WORK/raw/$name.stl"
             local in="$src"
             case "$src" in *.gz) in="$WORK/raw/$(basename "${src%.gz}")"; gzip -dc "$src" > "$in" ;; esac
             (cd "$(dirname "$in")" && timeout 300 gmsh "$in" -2 -nt 1 -format stl -save_all -o "$raw") \
                 >"$WORK/raw/$name.log" 2>&1 ;;
+        debstl) cp "$root$rest" "$raw" ;;
+        debscad) scad_mesh "$name" "$root$rest" ;;
+        debocct)
+            case "$rest" in
+                *:*)  # a member of a FreeCAD document (a zip)
+                    unzip -p "$root${rest%%:*}" "${rest#*:}" > "$WORK/raw/$name.brp"
+                    occt_mesh "$name" "$WORK/raw/$name.brp" ;;
+                *) occt_mesh "$name" "$root$rest" ;;
+            esac ;;
+        debscadline)  # LIBRARY_DIR:PROGRAM
+            printf '%s\n' "${rest#*:}" > "$WORK/raw/$name.scad"
+            OPENSCADPATH="$root${rest%%:*}" scad_mesh "$name" "$WORK/raw/$name.scad" ;;
     esac
     [ -s "$raw" ] && echo "$raw"
 }
@@ -164,7 +248,7 @@ printf 'name\tstatus\treason\tpoints\ttriangles\tvolume\tmin_triangle_angle\tsha
 good=0
 while IFS='|' read -r name kind src note; do
     [ -z "$name" ] && continue
-    src="$(eval echo "$src")"
+    case "$kind" in deb*) ;; *) src="$(eval echo "$src")" ;; esac
     status=dirty reason="" points="" tris="" vol="" amin="" a10=""
     off="$WORK/$name.off"
     if raw="$(tessellate "$name" "$kind" "$src")" && [ -n "$raw" ] \
