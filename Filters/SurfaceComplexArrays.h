@@ -41,6 +41,10 @@ constexpr const char* SourceFaceCADFaceId = "SourceFaceCADFaceId";
 // the interface triangulator's figures (vtkIdType each, the last a double)
 constexpr const char* ContourPointsAdded = "ContourPointsAdded";
 constexpr const char* InterfacesTriangulatedAgain = "InterfacesTriangulatedAgain"; // bent ones that crossed the surface
+// times contour subdivision was undone because a subdomain crossed itself
+// (2: in the end no edge split), and the regions whose edges were kept whole
+constexpr const char* ContourSubdivisionRetries = "ContourSubdivisionRetries";
+constexpr const char* InterfacesKeptWhole = "InterfacesKeptWhole";
 constexpr const char* InterfaceNewPoints = "InterfaceNewPoints";
 constexpr const char* InterfaceTrianglesBelowMinimumAngle = "InterfaceTrianglesBelowMinimumAngle";
 constexpr const char* InterfaceTrianglesBelowMinimumAngleAwayFromBoundary =
@@ -51,7 +55,8 @@ constexpr const char* InterfaceMinimumAngle = "InterfaceMinimumAngle";
 // The facts of earlier stages that every later stage copies from its input's
 // field data to its output's (PolyDataConversion.h: passOnFieldData).
 constexpr const char* PassedOn[] = { BalanceCriterionName, MaximumImbalance, SourceFaceCADFaceId,
-  SizeFieldSamples, SizeFieldArray, ContourPointsAdded, InterfacesTriangulatedAgain, InterfaceNewPoints,
+  SizeFieldSamples, SizeFieldArray, ContourPointsAdded, ContourSubdivisionRetries, InterfacesKeptWhole,
+  InterfacesTriangulatedAgain, InterfaceNewPoints,
   InterfaceTrianglesBelowMinimumAngle, InterfaceTrianglesBelowMinimumAngleAwayFromBoundary,
   EncroachedBoundarySegments, InterfaceMinimumAngle };
 

@@ -23,6 +23,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <exception>
 #include <functional>
@@ -193,17 +194,50 @@ long long retriangulateCrossingRegions(
   return redone;
 }
 
+// Marks risky every split on an edge of a region in `regions`.
+void markEdgesOfRegionsRisky(
+  const ptm::ComplexPiece& piece, const std::set<RegionKey>& regions, std::vector<ptm::EdgeSplit>& splits)
+{
+  if (regions.empty())
+  {
+    return;
+  }
+  std::map<std::pair<ptm::Index, ptm::Index>, std::size_t> splitOf; // ends (complex points) -> split
+  for (std::size_t k = 0; k < splits.size(); ++k)
+  {
+    splitOf[std::minmax(splits[k].ends[0], splits[k].ends[1])] = k;
+  }
+  for (const ptm::InterfaceRegion& region : piece.complex.interfaces)
+  {
+    if (!regions.count(RegionKey(region.planeId, region.pair[0], region.pair[1])))
+    {
+      continue;
+    }
+    for (const ptm::DirectedEdge& e : region.edges)
+    {
+      auto it = splitOf.find(std::minmax(e[0], e[1]));
+      if (it != splitOf.end())
+      {
+        splits[it->second].risky = true;
+      }
+    }
+  }
+}
+
 // Splits the long edges of the piece's interface loops (ContourSubdivision.h)
 // and numbers the new points from piece.globalPointCount (advanced past
 // them) in the order of their edges' global ids, which every rank learns:
 // a rank sees only the edges of its own regions, and ids must not depend on
 // which rank holds what. An edge takes the most parts any rank wants (each
 // sees the surface triangles on its own side); one that any rank finds
-// risky (EdgeSplit) is split by none. Returns how many points all ranks added.
+// risky (EdgeSplit) is split by none, and so is every edge of the regions in
+// `keepWhole` (the same set on every rank). Returns how many points all
+// ranks added.
 long long subdivideContours(vtkMultiProcessController* controller, ptm::ComplexPiece& piece,
-  const ptm::ContourSubdivisionOptions& options)
+  const ptm::ContourSubdivisionOptions& options, const std::set<RegionKey>& keepWhole)
 {
   std::vector<ptm::EdgeSplit> splits = ptm::interfaceEdgeSplits(piece.complex, piece.globalIds, options);
+  markEdgesOfRegionsRisky(piece, keepWhole, splits);
   std::vector<long long> mine;
   for (const ptm::EdgeSplit& s : splits)
   {
@@ -244,6 +278,58 @@ long long subdivideContours(vtkMultiProcessController* controller, ptm::ComplexP
   const long long added = next - piece.globalPointCount;
   piece.globalPointCount = next;
   return added;
+}
+
+// The regions of every subdomain whose surface, with the interfaces as
+// triangulated, crosses itself (BentRegionCheck.h:
+// subdomainsCrossingThemselves), learnt by every rank. Only subdomains with
+// a region whose edges were split are checked (a boundary point with a
+// global id from `firstSplitId` on). A rank whose check throws counts all
+// of those as crossing, and still joins the all-gather.
+std::set<RegionKey> regionsOfCrossingSubdomains(vtkMultiProcessController* controller,
+  const ptm::ComplexPiece& piece, const std::vector<Done>& done, long long firstSplitId)
+{
+  std::vector<ptm::TriangulatedRegion> regions;
+  std::set<int> subdomains;
+  for (const Done& d : done)
+  {
+    regions.push_back({ &piece.complex.interfaces[d.region], &d.pointOfLocal, &d.triangulation });
+    const bool split = std::any_of(d.pointOfLocal.begin(), d.pointOfLocal.end(),
+      [&](ptm::Index v) { return piece.globalIds[v] >= firstSplitId; });
+    if (split)
+    {
+      subdomains.insert(d.pair.begin(), d.pair.end());
+    }
+  }
+  subdomains.erase(-1);
+  std::vector<int> crossing;
+  try
+  {
+    crossing = ptm::subdomainsCrossingThemselves(piece.complex, regions, subdomains);
+  }
+  catch (const std::exception&)
+  {
+    crossing.assign(subdomains.begin(), subdomains.end());
+  }
+  std::vector<long long> mine;
+  for (const Done& d : done)
+  {
+    for (int s : crossing)
+    {
+      if (d.pair[0] == s || d.pair[1] == s)
+      {
+        mine.insert(mine.end(), { std::get<0>(d.key), std::get<1>(d.key), std::get<2>(d.key) });
+        break;
+      }
+    }
+  }
+  const std::vector<long long> all = ptm::allGatherValues(controller, mine);
+  std::set<RegionKey> keys;
+  for (std::size_t k = 0; k + 2 < all.size(); k += 3)
+  {
+    keys.insert(RegionKey(all[k], all[k + 1], all[k + 2]));
+  }
+  return keys;
 }
 
 // The first global id of every region's new points, numbered from `next`
@@ -323,8 +409,9 @@ void replaceLoopsByTriangles(
 }
 
 // The figures of every region (the same on every rank) in field data.
-void addFigures(
-  vtkFieldData* fd, const RegionFigures& total, long long contourPoints, long long redone, bool anyRegion)
+// `counts`: the contour points added, the subdivision's retries, the
+// regions kept whole and the regions triangulated again.
+void addFigures(vtkFieldData* fd, const RegionFigures& total, const std::array<long long, 4>& counts, bool anyRegion)
 {
   auto addCount = [&](const char* name, long long value) {
     vtkNew<vtkIdTypeArray> a;
@@ -332,8 +419,10 @@ void addFigures(
     a->InsertNextValue(value);
     fd->AddArray(a);
   };
-  addCount(ptm::arrays::ContourPointsAdded, contourPoints);
-  addCount(ptm::arrays::InterfacesTriangulatedAgain, redone);
+  addCount(ptm::arrays::ContourPointsAdded, counts[0]);
+  addCount(ptm::arrays::ContourSubdivisionRetries, counts[1]);
+  addCount(ptm::arrays::InterfacesKeptWhole, counts[2]);
+  addCount(ptm::arrays::InterfacesTriangulatedAgain, counts[3]);
   addCount(ptm::arrays::InterfaceNewPoints, total.newPoints);
   addCount(ptm::arrays::InterfaceTrianglesBelowMinimumAngle, total.belowMinimumAngle);
   addCount(ptm::arrays::InterfaceTrianglesBelowMinimumAngleAwayFromBoundary, total.belowMinimumAngleAwayFromBoundary);
@@ -385,6 +474,9 @@ int vtkInterfaceTriangulator::RequestData(
     return run.Failure();
   }
   std::string localError;
+  ptm::InterfaceTriangulationOptions options;
+  options.minimumAngleDegrees = this->MinimumAngle;
+  options.maximumEdgeLength = this->MaximumEdgeLength;
   const ptm::SizeField field = ptm::complexSizeField(
     this->SizeExpression, input ? input->GetFieldData() : nullptr, localError);
   // A size field must be positive where the interfaces meet the surface
@@ -399,40 +491,64 @@ int vtkInterfaceTriangulator::RequestData(
   {
     return run.Failure();
   }
+  options.sizeAt = field.size;
 
-  long long contourPoints = 0;
-  if (this->SubdivideContours)
+  ptm::ContourSubdivisionOptions subdivision;
+  subdivision.size = this->MaximumEdgeLength > 0 ? this->MaximumEdgeLength : piece.inputMeanEdgeLength;
+  subdivision.sizeAt = field.size;
+  subdivision.minimumAngleDegrees = this->MinimumAngle;
+  // Contour subdivision changes the regions' triangulations beyond what the
+  // cutter checked, so after it every subdomain surface is checked whole.
+  // Where one crosses itself, the regions of that subdomain keep their
+  // edges whole and everything is done again from the cut complex; if one
+  // still crosses, no edge is split (the interfaces the cutter checked).
+  // Every rank learns the same regions, so neighbours stay identical.
+  bool subdivide = this->SubdivideContours && subdivision.size > 0;
+  const ptm::ComplexPiece cut = subdivide ? piece : ptm::ComplexPiece();
+  std::set<RegionKey> keepWhole;
+  std::vector<Done> done;
+  long long contourPoints = 0, redone = 0, subdivisionRetries = 0;
+  for (;;)
   {
-    run.Step(0.05, "Splitting long contour edges");
-    ptm::ContourSubdivisionOptions subdivision;
-    subdivision.size = this->MaximumEdgeLength > 0 ? this->MaximumEdgeLength : piece.inputMeanEdgeLength;
-    subdivision.sizeAt = field.size;
-    subdivision.minimumAngleDegrees = this->MinimumAngle;
-    if (subdivision.size > 0)
+    contourPoints = 0;
+    if (subdivide)
     {
-      contourPoints = subdivideContours(controller, piece, subdivision);
+      run.Step(0.05, "Splitting long contour edges");
+      piece = cut;
+      contourPoints = subdivideContours(controller, piece, subdivision, keepWhole);
+    }
+    // Triangulate every region of this piece from canonically ordered input.
+    run.Step(0.1, "Triangulating interfaces");
+    done = triangulateRegions(piece, options, localError,
+      [this](double fraction) { this->UpdateProgress(0.1 + 0.7 * fraction); });
+    if (run.FailedAnywhere(localError))
+    {
+      return run.Failure();
+    }
+    if (run.AbortedAnywhere())
+    {
+      return run.Aborted();
+    }
+    run.Step(0.8, "Checking bent interfaces against the surface");
+    redone = retriangulateCrossingRegions(controller, piece, done);
+    if (contourPoints == 0)
+    {
+      break;
+    }
+    run.Step(0.85, "Checking the subdomain surfaces");
+    const std::set<RegionKey> crossing = regionsOfCrossingSubdomains(controller, piece, done, cut.globalPointCount);
+    if (crossing.empty())
+    {
+      break;
+    }
+    ++subdivisionRetries;
+    subdivide = subdivisionRetries < 2;
+    keepWhole.insert(crossing.begin(), crossing.end());
+    if (!subdivide)
+    {
+      piece = cut;
     }
   }
-
-  // Triangulate every region of this piece from canonically ordered input.
-  run.Step(0.1, "Triangulating interfaces");
-  ptm::InterfaceTriangulationOptions options;
-  options.minimumAngleDegrees = this->MinimumAngle;
-  options.maximumEdgeLength = this->MaximumEdgeLength;
-  options.sizeAt = field.size;
-  std::vector<Done> done = triangulateRegions(piece, options, localError,
-    [this](double fraction) { this->UpdateProgress(0.1 + 0.7 * fraction); });
-  if (run.FailedAnywhere(localError))
-  {
-    return run.Failure();
-  }
-  if (run.AbortedAnywhere())
-  {
-    return run.Aborted();
-  }
-  run.Step(0.8, "Checking bent interfaces against the surface");
-  const long long redone = retriangulateCrossingRegions(controller, piece, done);
-
   // Global ids of the new points: every rank learns every region's count.
   RegionFigures total;
   long long next = piece.globalPointCount;
@@ -443,7 +559,8 @@ int vtkInterfaceTriangulator::RequestData(
   run.Step(0.9, "Writing the complex");
   ptm::complexToPolyData(piece, {}, output);
   vtkFieldData* fd = output->GetFieldData();
-  addFigures(fd, total, contourPoints, redone, !firstNewId.empty());
+  addFigures(fd, total, { contourPoints, subdivisionRetries, static_cast<long long>(keepWhole.size()), redone },
+    !firstNewId.empty());
   ptm::passOnFieldData(input, fd); // the cutter's facts and the size samples
   return run.Done();
 }

@@ -369,6 +369,12 @@ def main(argv):
         "flat_crossings_removed": int(field_value(cutter.GetClientSideObject().GetOutputDataObject(0),
                                                   "FlatCrossingsRemoved") or 0),
         "kept_flat_crossings_after_failure": kept_crossings_after,
+        "interfaces": {name: int(field_value(interfaces.GetClientSideObject().GetOutputDataObject(0), field) or 0)
+                       for name, field in (("contour_points_added", "ContourPointsAdded"),
+                                           ("subdivision_retries", "ContourSubdivisionRetries"),
+                                           ("regions_kept_whole", "InterfacesKeptWhole"),
+                                           ("regions_triangulated_again", "InterfacesTriangulatedAgain"),
+                                           ("new_points", "InterfaceNewPoints"))},
         "quality": {
             "minimum_dihedral_angle_degrees": minimum_dihedral,
             "share_below_10_degrees": below_10 / float(max(tets, 1)),

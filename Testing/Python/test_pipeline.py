@@ -31,6 +31,14 @@ CASES.append(("ball.stl", 4, "RecursiveBisection", "Inertia", "SmoothSurface"))
 # default, SubdivideContours) splits edges here and the rank-independence
 # comparison covers the numbering of its points
 FINE_INTERFACES = {("bracket.stl", 7, "RecursiveBisection"), ("torus.stl", 4, "ParallelPlanes")}
+# (surface, K, strategy) -> the size given to the cutter and the interfaces
+# (MaximumSize, MaximumEdgeLength), as tetmesh.py --size does: netgen's
+# part1, where splitting the contours made a subdomain cross itself, so
+# the triangulator checks the subdomains and undoes the splits on the
+# crossing ones' regions (ContourSubdivisionRetries); the
+# rank-independence comparison covers that retry
+SIZED = {("regression/netgen_part1.off", 16, "RecursiveBisection"): 0.2607}
+CASES.append(("regression/netgen_part1.off", 16, "RecursiveBisection", "Inertia", "KeepSurface"))
 SMOOTH_DEVIATION = 0.01  # MaximumSurfaceDeviation of the SmoothSurface cases (the default)
 
 
@@ -53,12 +61,15 @@ def main():
     t.barrier()
     summary = {}
     for surface, K, strategy, direction, mode in CASES:
-        name = "%s_K%d_%s_%s" % (os.path.splitext(surface)[0] + os.path.splitext(surface)[1][1:], K, strategy, direction)
+        stem, extension = os.path.splitext(os.path.basename(surface))
+        name = "%s_K%d_%s_%s" % (stem + extension[1:], K, strategy, direction)
         name += "" if mode == "KeepSurface" else "_" + mode
         reader = simple.OpenDataFile(os.path.join(t.DATA, surface))
         cutter = simple.VolumeBalancedCutter(Input=reader, NumberOfSubdomains=K,
                                              Strategy=strategy, Direction=direction)
         interfaces = simple.InterfaceTriangulator(Input=cutter)
+        if (surface, K, strategy) in SIZED:
+            cutter.MaximumSize = interfaces.MaximumEdgeLength = SIZED[(surface, K, strategy)]
         if (surface, K, strategy) in FINE_INTERFACES and mode == "KeepSurface":
             bounds = reader.GetDataInformation().GetBounds()
             interfaces.MaximumEdgeLength = math.sqrt(sum((bounds[2 * i + 1] - bounds[2 * i]) ** 2
@@ -83,6 +94,9 @@ def main():
         added = sum(v["contour_points_added"] for v in summary.values())
         assert added > 0, "no case split a contour edge"
         print("contour points added over all cases:", added)
+        retried = [name for name, v in summary.items() if v["contour_subdivision_retries"] > 0]
+        assert retried, "no case undid a contour subdivision that made a subdomain cross itself"
+        print("cases whose contour subdivision was undone on some regions:", retried)
         with open(os.path.join(out_dir, "summary.json"), "w") as f:
             json.dump(summary, f, indent=1)
 
@@ -174,6 +188,8 @@ def check_case(base, K, mode):
     figures.update({"balance": balance, "interface_below_min_angle": counted, "relax_volume_change": volume_change,
                     "contour_points_added": int(vtk_to_numpy(complex_data.GetFieldData().GetArray(
                         "ContourPointsAdded"))[0]),
+                    "contour_subdivision_retries": int(vtk_to_numpy(complex_data.GetFieldData().GetArray(
+                        "ContourSubdivisionRetries"))[0]),
                     "relax_min_angle": [float(vtk_to_numpy(fd.GetArray(a))[0])
                                         for a in ("MinimumAngleBefore", "MinimumAngleAfter")],
                     "relax_below_10": [float(vtk_to_numpy(fd.GetArray(a))[0])

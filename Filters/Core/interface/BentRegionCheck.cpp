@@ -57,8 +57,10 @@ void addRegion(const SurfaceComplex& c, const TriangulatedRegion& r, int subdoma
   }
 }
 
-// Whether the surface of `subdomain` crosses itself near its bent regions.
-bool crossesNearBentRegions(const SurfaceComplex& c, const std::vector<TriangulatedRegion>& regions,
+// The surface of `subdomain`: its outer triangles held by the piece and its
+// regions `mine` (of `regions`) turned outward. `near` lists the triangles
+// of the regions flagged in `bent` and the outer ones in their box.
+AssembledSurface assembleSubdomain(const SurfaceComplex& c, const std::vector<TriangulatedRegion>& regions,
   const std::vector<char>& bent, const std::vector<std::size_t>& mine, int subdomain)
 {
   AssembledSurface a;
@@ -92,8 +94,47 @@ bool crossesNearBentRegions(const SurfaceComplex& c, const std::vector<Triangula
     }
     a.surface.triangles.push_back({ a.point(c, t[0]), a.point(c, t[1]), a.point(c, t[2]) });
   }
+  return a;
+}
+
+// Whether the surface of `subdomain` crosses itself near its bent regions.
+bool crossesNearBentRegions(const SurfaceComplex& c, const std::vector<TriangulatedRegion>& regions,
+  const std::vector<char>& bent, const std::vector<std::size_t>& mine, int subdomain)
+{
+  const AssembledSurface a = assembleSubdomain(c, regions, bent, mine, subdomain);
   const SelfIntersectionReport report = checkSelfIntersection(a.surface, a.near);
   return !report.checked || report.intersects;
+}
+
+// subdomain -> indices into `regions` of its regions
+std::map<int, std::vector<std::size_t>> regionsBySubdomain(const std::vector<TriangulatedRegion>& regions)
+{
+  std::map<int, std::vector<std::size_t>> regionsOf;
+  for (std::size_t r = 0; r < regions.size(); ++r)
+  {
+    for (int s : regions[r].region->pair)
+    {
+      if (s >= 0)
+      {
+        regionsOf[s].push_back(r);
+      }
+    }
+  }
+  return regionsOf;
+}
+
+// The subdomains among `among` whose outer triangles the piece holds.
+std::set<int> heldSubdomains(const SurfaceComplex& c, const std::set<int>& among)
+{
+  std::set<int> held;
+  for (std::size_t i = 0; i < c.triangles.size(); ++i)
+  {
+    if (c.trianglePairs[i][1] == -1 && among.count(c.trianglePairs[i][0]))
+    {
+      held.insert(c.trianglePairs[i][0]);
+    }
+  }
+  return held;
 }
 } // namespace
 
@@ -120,37 +161,25 @@ std::vector<std::size_t> bentRegionsCrossingSurface(
   const SurfaceComplex& c, const std::vector<TriangulatedRegion>& regions)
 {
   std::vector<char> bent(regions.size(), 0);
-  std::map<int, std::vector<std::size_t>> regionsOf; // subdomain -> its regions
   std::set<int> withBent;
   for (std::size_t r = 0; r < regions.size(); ++r)
   {
     bent[r] = regionIsBent(c, regions[r]) ? 1 : 0;
     for (int s : regions[r].region->pair)
     {
-      if (s >= 0)
+      if (s >= 0 && bent[r])
       {
-        regionsOf[s].push_back(r);
-        if (bent[r])
-        {
-          withBent.insert(s);
-        }
+        withBent.insert(s);
       }
     }
   }
-  std::set<int> held; // subdomains whose outer triangles the piece holds
-  for (std::size_t i = 0; i < c.triangles.size(); ++i)
-  {
-    if (c.trianglePairs[i][1] == -1 && withBent.count(c.trianglePairs[i][0]))
-    {
-      held.insert(c.trianglePairs[i][0]);
-    }
-  }
+  const std::map<int, std::vector<std::size_t>> regionsOf = regionsBySubdomain(regions);
   std::set<std::size_t> flagged;
-  for (int s : held)
+  for (int s : heldSubdomains(c, withBent))
   {
-    if (crossesNearBentRegions(c, regions, bent, regionsOf[s], s))
+    if (crossesNearBentRegions(c, regions, bent, regionsOf.at(s), s))
     {
-      for (std::size_t r : regionsOf[s])
+      for (std::size_t r : regionsOf.at(s))
       {
         if (bent[r])
         {
@@ -160,5 +189,25 @@ std::vector<std::size_t> bentRegionsCrossingSurface(
     }
   }
   return { flagged.begin(), flagged.end() };
+}
+
+std::vector<int> subdomainsCrossingThemselves(
+  const SurfaceComplex& c, const std::vector<TriangulatedRegion>& regions, const std::set<int>& among)
+{
+  const std::map<int, std::vector<std::size_t>> regionsOf = regionsBySubdomain(regions);
+  const std::vector<char> none(regions.size(), 0);
+  std::vector<int> crossing;
+  for (int s : heldSubdomains(c, among))
+  {
+    auto it = regionsOf.find(s);
+    const AssembledSurface a =
+      assembleSubdomain(c, regions, none, it == regionsOf.end() ? std::vector<std::size_t>() : it->second, s);
+    const SelfIntersectionReport report = checkSelfIntersection(a.surface);
+    if (!report.checked || report.intersects)
+    {
+      crossing.push_back(s);
+    }
+  }
+  return crossing;
 }
 } // namespace ptm
