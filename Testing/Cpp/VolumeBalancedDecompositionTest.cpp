@@ -617,6 +617,42 @@ TEST(VolumeBalancedDecomposition, CoarseCadNeverCrossesItself)
   }
 }
 
+// PrusaSlicer's cylinder (Data/regression/prusa_cylinder.off), every
+// triangle under 10 degrees, by 64 bisections: balancing trials cut without
+// snapping, and a vertex 5e-15 off such a plane kept its side, so the plane
+// crossed its edges 7.9e-15 from it. TetGen merged the two points and the
+// subdomain failed. No two points of the complex may lie within round-off.
+TEST(VolumeBalancedDecomposition, NoPointDuplicatedWithinRoundOff)
+{
+  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/prusa_cylinder.off");
+  ASSERT_TRUE(file.ok) << file.error;
+  DecompositionOptions options;
+  options.numberOfSubdomains = 64;
+  options.direction = CutDirection::Inertia; // as the cutter's default
+  const DecompositionResult r = decomposeVolumeBalanced(file.data.surface, options);
+  ASSERT_TRUE(r.ok) << r.error;
+  expectClosedSubdomains(r.complex, "prusa cylinder");
+  const std::vector<Vec3>& p = r.complex.points;
+  const double tolerance = 1e-12 * boundingBoxDiagonal(p);
+  std::vector<Index> order(p.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](Index a, Index b) { return p[a][0] < p[b][0]; });
+  int near = 0;
+  for (std::size_t i = 0; i < order.size(); ++i)
+  {
+    for (std::size_t j = i + 1; j < order.size() && p[order[j]][0] - p[order[i]][0] <= tolerance; ++j)
+    {
+      if (norm(p[order[i]] - p[order[j]]) <= tolerance)
+      {
+        ++near;
+        ADD_FAILURE() << "points " << order[i] << " and " << order[j] << " are "
+                      << norm(p[order[i]] - p[order[j]]) << " apart";
+      }
+    }
+  }
+  EXPECT_EQ(near, 0);
+}
+
 namespace
 {
 struct SharedRun
