@@ -125,18 +125,106 @@ std::vector<Done> triangulateRegions(const ptm::ComplexPiece& piece,
   return done;
 }
 
+// The triangulated regions of the piece, for the checks of BentRegionCheck.h.
+std::vector<ptm::TriangulatedRegion> triangulatedRegions(const ptm::ComplexPiece& piece, const std::vector<Done>& done)
+{
+  std::vector<ptm::TriangulatedRegion> regions;
+  for (const Done& d : done)
+  {
+    regions.push_back({ &piece.complex.interfaces[d.region], &d.pointOfLocal, &d.triangulation });
+  }
+  return regions;
+}
+
+// The keys of `found` (indices into `done`) of every rank.
+std::set<RegionKey> agreedRegions(
+  vtkMultiProcessController* controller, const std::vector<Done>& done, const std::vector<std::size_t>& found)
+{
+  std::vector<long long> mine;
+  for (std::size_t r : found)
+  {
+    mine.insert(mine.end(), { std::get<0>(done[r].key), std::get<1>(done[r].key), std::get<2>(done[r].key) });
+  }
+  const std::vector<long long> all = ptm::allGatherValues(controller, mine);
+  std::set<RegionKey> keys;
+  for (std::size_t k = 0; k + 2 < all.size(); k += 3)
+  {
+    keys.insert(RegionKey(all[k], all[k + 1], all[k + 2]));
+  }
+  return keys;
+}
+
 // Regions bent through snapped vertices whose triangulation crosses the
-// surface of a subdomain they bound (BentRegionCheck.h) are triangulated
-// again: first with the options the cutter checks its cuts with
-// (automatic sizing graded from the boundary, unsmoothed, no size field),
-// then with no points inside but what the quality of 1 degree needs. On
-// occt-Bottom with 16 and 32 parallel planes, a region triangulated at the
-// size asked for (270) crossed a surface triangle under a vertex snapped
-// 0.12 off the plane, and so did the minimal triangulation; the graded one
-// did not. Every rank learns every flagged region, so both sides of a
-// region take the same fall-back. A region still crossing after both is
-// left to the mesher, which names the subdomain. Returns the number of
-// regions triangulated again.
+// surface of a subdomain they bound (BentRegionCheck.h), learnt by every
+// rank. A rank whose check throws gives no verdict but still joins the
+// all-gather; the mesher checks every subdomain again.
+std::set<RegionKey> bentRegionsCrossing(
+  vtkMultiProcessController* controller, const ptm::ComplexPiece& piece, const std::vector<Done>& done)
+{
+  std::vector<std::size_t> crossing;
+  try
+  {
+    crossing = ptm::bentRegionsCrossingSurface(piece.complex, triangulatedRegions(piece, done));
+  }
+  catch (const std::exception&)
+  {
+  }
+  return agreedRegions(controller, done, crossing);
+}
+
+// The regions of every subdomain whose surface, with the interfaces as
+// triangulated, crosses itself (BentRegionCheck.h:
+// subdomainsCrossingThemselves), learnt by every rank. Only subdomains with
+// a region holding a boundary point of global id `firstId` or more are
+// checked. A rank whose check throws counts all of those as
+// crossing, and still joins the all-gather.
+std::set<RegionKey> regionsOfCrossingSubdomains(vtkMultiProcessController* controller,
+  const ptm::ComplexPiece& piece, const std::vector<Done>& done, long long firstId)
+{
+  std::set<int> subdomains;
+  for (const Done& d : done)
+  {
+    if (std::any_of(d.pointOfLocal.begin(), d.pointOfLocal.end(),
+          [&](ptm::Index v) { return piece.globalIds[v] >= firstId; }))
+    {
+      subdomains.insert(d.pair.begin(), d.pair.end());
+    }
+  }
+  subdomains.erase(-1);
+  std::vector<int> crossing;
+  try
+  {
+    crossing = ptm::subdomainsCrossingThemselves(piece.complex, triangulatedRegions(piece, done), subdomains);
+  }
+  catch (const std::exception&)
+  {
+    crossing.assign(subdomains.begin(), subdomains.end());
+  }
+  std::vector<std::size_t> found;
+  for (std::size_t r = 0; r < done.size(); ++r)
+  {
+    for (int s : crossing)
+    {
+      if (done[r].pair[0] == s || done[r].pair[1] == s)
+      {
+        found.push_back(r);
+        break;
+      }
+    }
+  }
+  return agreedRegions(controller, done, found);
+}
+
+// Bent regions that cross the surface (bentRegionsCrossing, the same on
+// every rank) are triangulated again: first with the options the cutter
+// checks its cuts with (automatic sizing graded from the boundary,
+// unsmoothed, no size field), then, where they still cross, with no points
+// inside but what the quality of 1 degree needs. On occt-Bottom with 16 and 32
+// parallel planes, a region triangulated at the size asked for (270)
+// crossed a surface triangle under a vertex snapped 0.12 off the plane, and
+// so did the minimal triangulation; the graded one did not. A region still
+// crossing after both is left to the mesher, which names the subdomain.
+// Returns the number of regions triangulated again.
 long long retriangulateCrossingRegions(
   vtkMultiProcessController* controller, const ptm::ComplexPiece& piece, std::vector<Done>& done)
 {
@@ -148,32 +236,7 @@ long long retriangulateCrossingRegions(
   long long redone = 0;
   for (const ptm::InterfaceTriangulationOptions* fallBack : { &checked, &cover })
   {
-    std::vector<ptm::TriangulatedRegion> regions;
-    for (const Done& d : done)
-    {
-      regions.push_back({ &piece.complex.interfaces[d.region], &d.pointOfLocal, &d.triangulation });
-    }
-    std::vector<long long> mine;
-    std::vector<std::size_t> crossing;
-    try
-    {
-      crossing = ptm::bentRegionsCrossingSurface(piece.complex, regions);
-    }
-    catch (const std::exception&)
-    {
-      // no verdict from this rank; the all-gather below must still be reached
-      // by every rank, and the mesher checks every subdomain again
-    }
-    for (std::size_t r : crossing)
-    {
-      mine.insert(mine.end(), { std::get<0>(done[r].key), std::get<1>(done[r].key), std::get<2>(done[r].key) });
-    }
-    const std::vector<long long> all = ptm::allGatherValues(controller, mine);
-    std::set<RegionKey> flagged;
-    for (std::size_t k = 0; k + 2 < all.size(); k += 3)
-    {
-      flagged.insert(RegionKey(all[k], all[k + 1], all[k + 2]));
-    }
+    const std::set<RegionKey> flagged = bentRegionsCrossing(controller, piece, done);
     if (flagged.empty())
     {
       break;
@@ -280,56 +343,69 @@ long long subdivideContours(vtkMultiProcessController* controller, ptm::ComplexP
   return added;
 }
 
-// The regions of every subdomain whose surface, with the interfaces as
-// triangulated, crosses itself (BentRegionCheck.h:
-// subdomainsCrossingThemselves), learnt by every rank. Only subdomains with
-// a region whose edges were split are checked (a boundary point with a
-// global id from `firstSplitId` on). A rank whose check throws counts all
-// of those as crossing, and still joins the all-gather.
-std::set<RegionKey> regionsOfCrossingSubdomains(vtkMultiProcessController* controller,
-  const ptm::ComplexPiece& piece, const std::vector<Done>& done, long long firstSplitId)
+struct Triangulated
 {
-  std::vector<ptm::TriangulatedRegion> regions;
-  std::set<int> subdomains;
-  for (const Done& d : done)
+  std::vector<Done> done;
+  std::set<RegionKey> keepWhole; // regions whose edges were not split
+  long long contourPoints = 0, redone = 0, subdivisionRetries = 0;
+};
+
+// Splits the contours (unless `subdivision` is null) and triangulates every
+// region, then checks the subdomain surfaces whole. Contour subdivision
+// changes the regions' triangulations beyond what the cutter checked: where
+// a subdomain then crosses itself, the regions of that subdomain keep their
+// edges whole and everything is done again from the cut complex, and if one
+// still crosses, no edge is split at all. Only subdomains with a split
+// edge are checked; one that crosses itself as the cut left it is named
+// by the mesher. Every rank learns the same regions, so neighbours stay
+// identical.
+// Returns 0, 1 on a failure (`localError`, agreed) or 2 on an abort.
+int subdivideAndTriangulate(vtkAlgorithm* self, ptm::StageRun& run, vtkMultiProcessController* controller,
+  ptm::ComplexPiece& piece, const ptm::ContourSubdivisionOptions* subdivision,
+  const ptm::InterfaceTriangulationOptions& options, Triangulated& t, std::string& localError)
+{
+  const ptm::ComplexPiece cut = subdivision ? piece : ptm::ComplexPiece();
+  for (;;)
   {
-    regions.push_back({ &piece.complex.interfaces[d.region], &d.pointOfLocal, &d.triangulation });
-    const bool split = std::any_of(d.pointOfLocal.begin(), d.pointOfLocal.end(),
-      [&](ptm::Index v) { return piece.globalIds[v] >= firstSplitId; });
-    if (split)
+    t.contourPoints = 0;
+    if (subdivision)
     {
-      subdomains.insert(d.pair.begin(), d.pair.end());
+      run.Step(0.05, "Splitting long contour edges");
+      piece = cut;
+      t.contourPoints = subdivideContours(controller, piece, *subdivision, t.keepWhole);
+    }
+    run.Step(0.1, "Triangulating interfaces");
+    t.done = triangulateRegions(piece, options, localError,
+      [self](double fraction) { self->UpdateProgress(0.1 + 0.7 * fraction); });
+    if (run.FailedAnywhere(localError))
+    {
+      return 1;
+    }
+    if (run.AbortedAnywhere())
+    {
+      return 2;
+    }
+    run.Step(0.8, "Checking bent interfaces against the surface");
+    t.redone = retriangulateCrossingRegions(controller, piece, t.done);
+    if (t.contourPoints == 0)
+    {
+      return 0;
+    }
+    run.Step(0.85, "Checking the subdomain surfaces");
+    const std::set<RegionKey> crossed =
+      regionsOfCrossingSubdomains(controller, piece, t.done, cut.globalPointCount);
+    if (crossed.empty())
+    {
+      return 0;
+    }
+    ++t.subdivisionRetries;
+    t.keepWhole.insert(crossed.begin(), crossed.end());
+    if (t.subdivisionRetries == 2)
+    {
+      subdivision = nullptr;
+      piece = cut;
     }
   }
-  subdomains.erase(-1);
-  std::vector<int> crossing;
-  try
-  {
-    crossing = ptm::subdomainsCrossingThemselves(piece.complex, regions, subdomains);
-  }
-  catch (const std::exception&)
-  {
-    crossing.assign(subdomains.begin(), subdomains.end());
-  }
-  std::vector<long long> mine;
-  for (const Done& d : done)
-  {
-    for (int s : crossing)
-    {
-      if (d.pair[0] == s || d.pair[1] == s)
-      {
-        mine.insert(mine.end(), { std::get<0>(d.key), std::get<1>(d.key), std::get<2>(d.key) });
-        break;
-      }
-    }
-  }
-  const std::vector<long long> all = ptm::allGatherValues(controller, mine);
-  std::set<RegionKey> keys;
-  for (std::size_t k = 0; k + 2 < all.size(); k += 3)
-  {
-    keys.insert(RegionKey(all[k], all[k + 1], all[k + 2]));
-  }
-  return keys;
 }
 
 // The first global id of every region's new points, numbered from `next`
@@ -497,58 +573,14 @@ int vtkInterfaceTriangulator::RequestData(
   subdivision.size = this->MaximumEdgeLength > 0 ? this->MaximumEdgeLength : piece.inputMeanEdgeLength;
   subdivision.sizeAt = field.size;
   subdivision.minimumAngleDegrees = this->MinimumAngle;
-  // Contour subdivision changes the regions' triangulations beyond what the
-  // cutter checked, so after it every subdomain surface is checked whole.
-  // Where one crosses itself, the regions of that subdomain keep their
-  // edges whole and everything is done again from the cut complex; if one
-  // still crosses, no edge is split (the interfaces the cutter checked).
-  // Every rank learns the same regions, so neighbours stay identical.
-  bool subdivide = this->SubdivideContours && subdivision.size > 0;
-  const ptm::ComplexPiece cut = subdivide ? piece : ptm::ComplexPiece();
-  std::set<RegionKey> keepWhole;
-  std::vector<Done> done;
-  long long contourPoints = 0, redone = 0, subdivisionRetries = 0;
-  for (;;)
+  Triangulated t;
+  const int status = subdivideAndTriangulate(this, run, controller, piece,
+    this->SubdivideContours && subdivision.size > 0 ? &subdivision : nullptr, options, t, localError);
+  if (status != 0)
   {
-    contourPoints = 0;
-    if (subdivide)
-    {
-      run.Step(0.05, "Splitting long contour edges");
-      piece = cut;
-      contourPoints = subdivideContours(controller, piece, subdivision, keepWhole);
-    }
-    // Triangulate every region of this piece from canonically ordered input.
-    run.Step(0.1, "Triangulating interfaces");
-    done = triangulateRegions(piece, options, localError,
-      [this](double fraction) { this->UpdateProgress(0.1 + 0.7 * fraction); });
-    if (run.FailedAnywhere(localError))
-    {
-      return run.Failure();
-    }
-    if (run.AbortedAnywhere())
-    {
-      return run.Aborted();
-    }
-    run.Step(0.8, "Checking bent interfaces against the surface");
-    redone = retriangulateCrossingRegions(controller, piece, done);
-    if (contourPoints == 0)
-    {
-      break;
-    }
-    run.Step(0.85, "Checking the subdomain surfaces");
-    const std::set<RegionKey> crossing = regionsOfCrossingSubdomains(controller, piece, done, cut.globalPointCount);
-    if (crossing.empty())
-    {
-      break;
-    }
-    ++subdivisionRetries;
-    subdivide = subdivisionRetries < 2;
-    keepWhole.insert(crossing.begin(), crossing.end());
-    if (!subdivide)
-    {
-      piece = cut;
-    }
+    return status == 1 ? run.Failure() : run.Aborted();
   }
+  std::vector<Done>& done = t.done;
   // Global ids of the new points: every rank learns every region's count.
   RegionFigures total;
   long long next = piece.globalPointCount;
@@ -559,7 +591,8 @@ int vtkInterfaceTriangulator::RequestData(
   run.Step(0.9, "Writing the complex");
   ptm::complexToPolyData(piece, {}, output);
   vtkFieldData* fd = output->GetFieldData();
-  addFigures(fd, total, { contourPoints, subdivisionRetries, static_cast<long long>(keepWhole.size()), redone },
+  addFigures(fd, total,
+    { t.contourPoints, t.subdivisionRetries, static_cast<long long>(t.keepWhole.size()), t.redone },
     !firstNewId.empty());
   ptm::passOnFieldData(input, fd); // the cutter's facts and the size samples
   return run.Done();
