@@ -506,7 +506,8 @@ std::string selfIntersectionError(const TriangleSurface& s)
     std::ostringstream msg;
     msg << "the surface intersects itself: its triangles " << crossing.firstTriangle << " and "
         << crossing.secondTriangle << " cross near (" << near[0] << ", " << near[1] << ", "
-        << near[2] << "); TetGen cannot mesh it";
+        << near[2] << "); TetGen cannot mesh it (unless the input itself crosses, the cut made this: "
+        << "another number of subdomains or the other strategy cuts it differently)";
     return msg.str();
   }
   return {};
