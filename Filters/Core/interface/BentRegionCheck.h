@@ -1,7 +1,8 @@
 #ifndef PTM_BENT_REGION_CHECK_H
 #define PTM_BENT_REGION_CHECK_H
-// Stage 2 guard: interfaces bent through snapped vertices, checked as they
-// are really triangulated.
+// Stage 2 guards: interfaces bent through snapped vertices, checked as they
+// are really triangulated; and, after contour subdivision, whole subdomain
+// surfaces (subdomainsCrossingThemselves, at the end).
 //
 // The cutter leaves input vertices that lie within its snap distance of a
 // plane where they are (the input's geometry is kept), so an interface region
