@@ -6,7 +6,9 @@
 #   bash Testing/Corpus/fetch.sh [OUT_DIR]            # default out/corpus
 #   bash Testing/Corpus/fetch.sh --unseen [OUT_DIR]   # default out/unseen
 #
-# --unseen builds a second set, never used to tune the pipeline: surfaces from
+# --unseen builds a second set, for robustness runs (two of its surfaces,
+# netgen's part1 and Prusa's cylinder, became regression files in
+# Data/regression after failures found on them): surfaces from
 # packages the main corpus does not touch (netgen-doc, prusa-slicer, cura,
 # freecad-common, openscad-testing-data, openscad-mcad). Those packages are
 # downloaded with apt-get download and unpacked under OUT_DIR/.work, not
