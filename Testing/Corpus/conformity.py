@@ -1,5 +1,5 @@
-"""Independent conformity check of a pipeline result (numpy + meshio only;
-nothing of the plugin or of ParaView is used).
+"""Independent conformity check of a pipeline result (numpy and VTK's XML
+readers only; nothing of the plugin is used).
 
     /usr/bin/python3 conformity.py MESH.pvtu SURFACE.off
 
@@ -40,7 +40,7 @@ def pieces(path):
 
 
 def read_polydata(path):
-    """(points, GlobalPointIds, triangles) of a .vtp piece (meshio does not read .vtp)."""
+    """(points, GlobalPointIds, triangles) of a .vtp piece."""
     from vtkmodules.util.numpy_support import vtk_to_numpy
     from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
@@ -59,17 +59,35 @@ def read_polydata(path):
 
 
 def read_piece(path, cell_type):
-    import meshio
+    """(points, GlobalPointIds, cells of cell_type) of a .vtu or .vtp piece,
+    read with VTK's own XML readers. meshio 5.0 misreads the pieces' raw
+    appended arrays (it looks them up by offset among those it has already
+    renamed): on a K = 5 mesh it failed with "buffer size must be a multiple
+    of element size", so the sweeps could not check odd K before session 20."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 
     if path.endswith(".vtp"):
         return read_polydata(path)
-
-    with contextlib.redirect_stdout(io.StringIO()):
-        m = meshio.read(path)
-    gids = m.point_data.get("GlobalPointIds")
-    cells = [b.data for b in m.cells if b.type == cell_type]
-    cells = np.concatenate(cells) if cells else np.zeros((0, 4 if cell_type == "tetra" else 3), dtype=np.int64)
-    return m.points.astype(np.float64), (None if gids is None else np.asarray(gids).astype(np.int64).ravel()), cells
+    reader = vtkXMLUnstructuredGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    grid = reader.GetOutput()
+    gids = grid.GetPointData().GetArray("GlobalPointIds")
+    gids = None if gids is None else vtk_to_numpy(gids).astype(np.int64).ravel()
+    size = 4 if cell_type == "tetra" else 3
+    vtk_type = 10 if cell_type == "tetra" else 5  # VTK_TETRA, VTK_TRIANGLE
+    if grid.GetNumberOfCells() == 0:
+        return np.zeros((0, 3)), gids, np.zeros((0, size), dtype=np.int64)
+    points = vtk_to_numpy(grid.GetPoints().GetData()).astype(np.float64)
+    types = vtk_to_numpy(grid.GetCellTypesArray())
+    offsets = vtk_to_numpy(grid.GetCells().GetOffsetsArray()).astype(np.int64)
+    conn = vtk_to_numpy(grid.GetCells().GetConnectivityArray()).astype(np.int64)
+    chosen = np.where(types == vtk_type)[0]
+    if ((offsets[chosen + 1] - offsets[chosen]) != size).any():
+        raise ValueError("%s: cells of type %d without %d points" % (path, vtk_type, size))
+    cells = conn[offsets[chosen][:, None] + np.arange(size)]
+    return points, gids, cells
 
 
 def exact_signs(p, volumes):

@@ -10,7 +10,7 @@ it runs `mpiexec -n 2 --oversubscribe pvbatch Scripts/tetmesh.py SURF -o
 OUT.pvtu --subdomains K --strategy S --size H --json J` in its own process
 group, with a timeout (the whole group is killed; a timeout is a failure),
 and checks the result independently of the plugin (conformity.py: the .pvtu
-pieces read with meshio, merged by GlobalPointIds, numpy only). Beside each
+pieces read with VTK's XML readers, merged by GlobalPointIds, numpy). Beside each
 surface it runs serial TetGen (Debian's `tetgen` binary) with `-pq2.0a<bound>`
 and the same volume bound; Testing/Benchmarks/mesh_quality.py measures both.
 

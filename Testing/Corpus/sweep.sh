@@ -5,7 +5,7 @@
 #   bash Testing/Corpus/sweep.sh --plugin PATH/ParallelTetMesher.so [sweep.py options]
 #
 # Needs the corpus (bash Testing/Corpus/fetch.sh) and Debian's tetgen, pvbatch,
-# mpiexec, python3-numpy and python3-meshio. Every option of sweep.py passes
+# mpiexec, python3-numpy and python3-paraview (VTK's readers). Every option of sweep.py passes
 # through: --quick, --surfaces a,b, --ks 2,8, --strategies S, --timeout S,
 # --jobs N, --corpus DIR, --out DIR.
 set -euo pipefail
@@ -16,5 +16,5 @@ done
 if [ "$(id -u)" = 0 ]; then
     export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 fi
-# numpy and meshio come from Debian's python3, not from a virtualenv's
+# numpy and VTK come from Debian's python3, not from a virtualenv's
 exec /usr/bin/python3 "$HERE/sweep.py" "$@"
