@@ -69,6 +69,10 @@ def parse_arguments(argv):
     p.add_argument("--keep-flat-crossings", action="store_true",
                    help="keep every contour point of the cuts, also those inside planar faces (default: they "
                    "are taken out, and the run is made again keeping them if TetGen fails)")
+    p.add_argument("--recut-attempts", type=int, default=3,
+                   help="where a stage after the cut fails (a subdomain crossing itself, TetGen failing on one), "
+                   "cut again at most this many times, otherwise (keeping flat crossings, untilted planes, "
+                   "planes not turned to earlier lines), with a warning; 0 fails at once (default 3)")
     p.add_argument("--no-boundary-refinement", action="store_true",
                    help="mesh the subdomain surfaces as they are (TetGen keeps every input sliver)")
     p.add_argument("--coplanar-tolerance", type=float, default=0.0,
@@ -199,32 +203,66 @@ def field_value(polydata, name):
     return float(array.GetValue(0)) if array is not None and array.GetNumberOfTuples() else None
 
 
-def keep_flat_crossings_if_tetgen_fails(run, errors, times, cutter, stages):
-    """Runs the stages after the cut. Where the volume meshing fails after the
-    cutter took contour points out of planar faces (FlatCrossingsRemoved),
-    TetGen may fail on the thin slabs that leaves and mesh them with the
-    crossings kept (OCCT's Top and Bottom at 32 parallel planes), so the
-    stages run once more from a cut that keeps them (times["failed attempt"]:
-    the seconds of the cut and stages that failed). Returns the first
-    failure's message when that happened, else None."""
-    try:
-        for stage, proxy in stages:
-            run(stage, proxy)
-        return None
-    except Failure as failure:
-        removed = field_value(cutter.GetClientSideObject().GetOutputDataObject(0), "FlatCrossingsRemoved")
-        if not str(failure).startswith("volume meshing failed") or not removed:
-            raise
-        sys.stderr.write("tetmesh: warning: %s; the cut had taken %d contour points out of planar faces: "
-                         "cutting again keeping them (--keep-flat-crossings)\n" % (failure, removed))
-        sys.stderr.flush()
-        del errors.messages[:]
-        times["failed attempt"] = times.get("cut", 0.0) + sum(times.get(stage, 0.0) for stage, _ in stages)
-        cutter.RemoveFlatCrossings = 0
-        run("cut", cutter)
-        for stage, proxy in stages:
-            run(stage, proxy)
-        return str(failure)
+def recut_attempts(cutter, strategy):
+    """The cutter settings tried, in order, after the stages following the
+    cut failed: the cut as asked; keeping the contour points it took out of
+    planar faces (where it took some: TetGen may fail on the thin slabs that
+    leaves and mesh them with the crossings kept, OCCT's Top and Bottom at 32
+    parallel planes); recursive bisection's planes untilted; and planes not
+    turned towards lines already drawn. Each is the cut as asked with that
+    one change, but the last, which keeps the tilt off too. The last two are
+    for subdomains a cut leaves crossing themselves where its own check
+    cannot see it: FreeCAD's TCMT1107_4 at K = 16 by bisection, where a
+    plane tilted and turned through a vertex another plane had bent off
+    itself, so two interfaces of subdomain 4 folded onto each other; with
+    either change it meshes (session 20)."""
+    removed = field_value(cutter.GetClientSideObject().GetOutputDataObject(0), "FlatCrossingsRemoved")
+    attempts = []
+    if removed:
+        attempts.append(({"RemoveFlatCrossings": 0},
+                         "the cut had taken %d contour points out of planar faces: cutting again keeping them "
+                         "(--keep-flat-crossings)" % removed))
+    if strategy == "RecursiveBisection" and cutter.PlaneTiltAngle != 0:
+        attempts.append(({"PlaneTiltAngle": 0}, "cutting again with untilted planes"))
+    if cutter.PlaneAlignmentAngle != 0:
+        attempts.append(({"PlaneTiltAngle": 0, "PlaneAlignmentAngle": 0},
+                         "cutting again with planes neither tilted nor turned towards earlier lines"))
+    return attempts
+
+
+def recut_if_stages_fail(run, errors, times, cutter, stages, strategy, most_recuts):
+    """Runs the stages after the cut. Where one of them fails, a cut made
+    otherwise (recut_attempts) may succeed, as a user would try by hand: the
+    stages run again from each of at most most_recuts other cuts, each
+    beginning from the cutter's settings as asked, with a warning naming the
+    failure and the change. times["failed attempts"] sums the seconds of the
+    cuts and stages that failed. Returns the list of {"failure", "change"}
+    of the attempts that failed (empty when the first cut succeeded);
+    raises the last failure if every attempt failed."""
+    asked = {name: cutter.GetPropertyValue(name)
+             for name in ("RemoveFlatCrossings", "PlaneTiltAngle", "PlaneAlignmentAngle")}
+    failed = []
+    attempts = None
+    while True:
+        try:
+            for stage, proxy in stages:
+                run(stage, proxy)
+            return failed
+        except Failure as failure:
+            if attempts is None:
+                attempts = recut_attempts(cutter, strategy)[:max(most_recuts, 0)]
+            if len(failed) == len(attempts):
+                raise
+            change, description = attempts[len(failed)]
+            failed.append({"failure": str(failure), "change": description})
+            sys.stderr.write("tetmesh: warning: %s; %s\n" % (failure, description))
+            sys.stderr.flush()
+            del errors.messages[:]
+            times["failed attempts"] = times.get("failed attempts", 0.0) + times.get("cut", 0.0) + sum(
+                times.pop(stage, 0.0) for stage, _ in stages)
+            for name, value in asked.items():
+                setattr(cutter, name, change.get(name, value))
+            run("cut", cutter)
 
 
 def main(argv):
@@ -317,8 +355,9 @@ def main(argv):
         MaximumVolume=volume,
         BoundaryRefinement=0 if args.no_boundary_refinement else 1,
         CoplanarTolerance=args.coplanar_tolerance, SizeExpression=args.size_expression)
-    kept_crossings_after = keep_flat_crossings_if_tetgen_fails(
-        run, errors, times, cutter, [("interface", interfaces), ("relax", relaxed), ("volume meshing", mesher)])
+    recuts = recut_if_stages_fail(
+        run, errors, times, cutter, [("interface", interfaces), ("relax", relaxed), ("volume meshing", mesher)],
+        args.strategy, args.recut_attempts)
 
     start = time.perf_counter()
     output = os.path.abspath(args.output)
@@ -368,7 +407,9 @@ def main(argv):
         "seconds": times,
         "flat_crossings_removed": int(field_value(cutter.GetClientSideObject().GetOutputDataObject(0),
                                                   "FlatCrossingsRemoved") or 0),
-        "kept_flat_crossings_after_failure": kept_crossings_after,
+        "recuts": recuts,
+        "kept_flat_crossings_after_failure": next(
+            (r["failure"] for r in recuts if "--keep-flat-crossings" in r["change"]), None),
         "interfaces": {name: int(field_value(interfaces.GetClientSideObject().GetOutputDataObject(0), field) or 0)
                        for name, field in (("contour_points_added", "ContourPointsAdded"),
                                            ("subdivision_retries", "ContourSubdivisionRetries"),
