@@ -11,6 +11,7 @@
 // of the box with a cavity at K = 7 kept an edge 218 times its shortest, and
 // one triangle of 17.8 degrees away from the boundary, without it.
 #include "ContourSubdivision.h"
+#include "OffFormat.h"
 #include "SelfIntersectionCheck.h"
 #include "TestSurfaces.h"
 #include "VolumeBalancedDecomposition.h"
@@ -87,3 +88,29 @@ INSTANTIATE_TEST_SUITE_P(KAndStrategy, CompatibleSubdomainSurfaces,
   [](const auto& info) {
     return std::string(toString(std::get<1>(info.param))) + "_K" + std::to_string(std::get<0>(info.param));
   });
+
+// FreeCAD's TCMT1107_4 insert (Data/regression/freecad_tcmt1107_4.off) by 16
+// bisections: plane 10 split an edge where planes 0 and 5 meet, bent off
+// plane 5 at a snapped vertex, and the plane-6 interface of subdomain 4
+// that got the new point was triangulated anew across the bent plane-5
+// one's triangles. The cutter's check looked only at bent points of the
+// regions it changed; TetGen refused subdomain 4.
+TEST(CompatibleSubdomainSurfaces, NoSubdomainFoldsWhereAnEdgeOfABentRegionIsSplit)
+{
+  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/freecad_tcmt1107_4.off");
+  ASSERT_TRUE(file.ok) << file.error;
+  DecompositionOptions options;
+  options.numberOfSubdomains = 16;
+  options.direction = CutDirection::Inertia; // as the cutter's default
+  const DecompositionResult d = decomposeVolumeBalanced(file.data.surface, options);
+  ASSERT_TRUE(d.ok) << d.error;
+  SurfaceComplex c = d.complex;
+  const InterfaceFigures figures = triangulateAllInterfaces(c);
+  ASSERT_TRUE(figures.ok) << figures.error;
+  for (int s = 0; s < 16; ++s)
+  {
+    const SelfIntersectionReport crossing = checkSelfIntersection(TriangleSurface{ c.points, subdomainTriangles(c, s) });
+    EXPECT_TRUE(crossing.checked) << crossing.note;
+    EXPECT_FALSE(crossing.intersects) << "subdomain " << s << " crosses itself";
+  }
+}

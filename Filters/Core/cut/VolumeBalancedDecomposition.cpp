@@ -145,8 +145,10 @@ bool volumesAddUp(const SurfaceComplex& c, double parts, double whole)
 // (`cutBox`) may have been split by the cut, and is triangulated anew as a
 // whole (missed at first: a piece of example005's first interface crossed a
 // surface triangle far from the cut that split it, K = 10); so may a region
-// another part shares with them. A flat one is a section of the part by its
-// plane, which no face of the part crosses, however it is triangulated. A
+// another part shares with them, or one that got a point of the cut (at
+// index `firstNewPoint` or above) on an edge it shares with a split one. A
+// flat one is a section of the part by its plane, which no face of the part
+// crosses, however it is triangulated, but for the faces of bent regions. A
 // region bent through points left off its plane (snapped vertices of the
 // input, moved chord points) differs from the section only around those
 // points: within the box of the surface triangles at each (`zones`), where
@@ -161,12 +163,14 @@ struct PartRegions
   std::vector<Index> zonePoints; // the point of each zone (-1: none)
 };
 
-PartRegions regionsOfPart(const SurfaceComplex& c, int cell, const Box& cutBox, int below, int above)
+PartRegions regionsOfPart(
+  const SurfaceComplex& c, int cell, const Box& cutBox, int below, int above, Index firstNewPoint)
 {
   PartRegions r;
   const double roundOff = 1e-10 * norm(cutBox.hi - cutBox.lo);
   const bool cutPart = cell == below || cell == above;
-  std::unordered_map<Index, std::size_t> zoneOf;
+  std::vector<char> changed;
+  std::vector<Box> changedBoxes;
   for (const InterfaceRegion& region : c.interfaces)
   {
     if (region.pair[0] != cell && region.pair[1] != cell)
@@ -183,12 +187,29 @@ PartRegions regionsOfPart(const SurfaceComplex& c, int cell, const Box& cutBox, 
     r.boxes.push_back(box);
     const bool shared = region.pair[0] == below || region.pair[0] == above || region.pair[1] == below ||
       region.pair[1] == above;
-    if (!(cutPart || shared) || !box.overlaps(cutBox))
+    const std::vector<Index>& own = r.points.back();
+    const bool gotPoint = std::any_of(own.begin(), own.end(), [&](Index v) { return v >= firstNewPoint; });
+    changed.push_back((cutPart || shared || gotPoint) && box.overlaps(cutBox));
+    if (changed.back())
+    {
+      changedBoxes.push_back(box);
+    }
+  }
+  // The bent points of a changed region, and of every region reaching into
+  // a changed one: a flat region is the section only where no bent face of
+  // the part pokes through its plane (TCMT1107_4, K = 16: a flat interface
+  // that got a point was triangulated anew across a bent one's triangles).
+  std::unordered_map<Index, std::size_t> zoneOf;
+  for (std::size_t k = 0; k < r.regions.size(); ++k)
+  {
+    const bool nearChanged = changed[k] ||
+      std::any_of(changedBoxes.begin(), changedBoxes.end(), [&](const Box& b) { return b.overlaps(r.boxes[k]); });
+    if (!nearChanged)
     {
       continue;
     }
-    const CuttingPlane& plane = c.planes[region.planeId];
-    for (Index v : r.points.back())
+    const CuttingPlane& plane = c.planes[r.regions[k]->planeId];
+    for (Index v : r.points[k])
     {
       if (std::fabs(dot(plane.normal, c.points[v] - plane.origin)) > roundOff && !zoneOf.count(v))
       {
@@ -414,9 +435,10 @@ bool partSurface(const SurfaceComplex& c, int cell, const PartRegions& r, bool w
 // cutter's time grow with K (a ball of 23,592 triangles, K = 64, recursive
 // bisection: 62 % of 8.6 s; the neighbours of a part cut early are whole
 // halves). A region that cannot be triangulated counts as crossing.
-bool partCrossesItself(const SurfaceComplex& c, int cell, const Box& cutBox, int below, int above)
+bool partCrossesItself(
+  const SurfaceComplex& c, int cell, const Box& cutBox, int below, int above, Index firstNewPoint)
 {
-  PartRegions r = regionsOfPart(c, cell, cutBox, below, above);
+  PartRegions r = regionsOfPart(c, cell, cutBox, below, above, firstNewPoint);
   if (r.zones.empty())
   {
     return false;
@@ -851,12 +873,24 @@ bool PartCut::soundParts(const Trial& trial) const
   {
     return true; // no interface: the plane passed between bodies of the part
   }
+  // So do the parts of a region that got a point of this cut without being
+  // split (an edge it shares with a split region was split): a region of
+  // another plane bent at the new point may fold onto a neighbour (FreeCAD's
+  // TCMT1107_4, K = 16, bisection: plane 10 split an edge where planes 0 and
+  // 5 meet, bent off plane 5, and subdomain 4's plane-5 interface then
+  // crossed its plane-6 one; no check saw it).
+  const Index firstNewPoint = static_cast<Index>(c.points.size());
   for (const InterfaceRegion& region : trial.complex.interfaces)
   {
+    bool gotPoint = false;
+    for (const DirectedEdge& e : region.edges)
+    {
+      gotPoint = gotPoint || e[0] >= firstNewPoint;
+    }
     for (int k = 0; k < 2; ++k)
     {
       const int other = region.pair[1 - k];
-      if ((region.pair[k] == below || region.pair[k] == above) && other >= 0)
+      if ((gotPoint || region.pair[k] == below || region.pair[k] == above) && other >= 0)
       {
         parts.insert(other);
       }
@@ -875,7 +909,8 @@ bool PartCut::anyPartCrosses(const SurfaceComplex& trialComplex, const std::set<
   {
     for (auto it = parts.begin(); it != parts.end() && found == 0; ++it)
     {
-      if ((!options.checksPart || options.checksPart(*it)) && partCrossesItself(trialComplex, *it, cutBox, below, above))
+      if ((!options.checksPart || options.checksPart(*it)) &&
+        partCrossesItself(trialComplex, *it, cutBox, below, above, static_cast<Index>(c.points.size())))
       {
         found = 1;
       }
