@@ -1,7 +1,8 @@
 """Quality of a tetrahedral mesh, computed the same way for every peer.
 
-Every mesher's output (the pipeline's .pvtu pieces, serial TetGen's legacy
-.vtk, Gmsh's .msh) is read with meshio and measured here with numpy, so the
+Every mesher's output (the pipeline's .pvtu pieces with VTK's XML reader,
+serial TetGen's legacy .vtk and Gmsh's .msh with meshio) is measured here
+with numpy, so the
 figures compare like with like instead of mixing ParaView's Mesh Quality,
 TetGen's and Gmsh's own statistics:
 
@@ -104,20 +105,54 @@ class QualityAccumulator:
 
 
 def piece_files(path):
-    """The files that hold a mesh: the pieces of a .pvtu, else the file itself."""
-    if not path.endswith(".pvtu"):
+    """The files that hold a mesh: the pieces of a .pvtu or .pvtp, else the file itself."""
+    if not path.endswith((".pvtu", ".pvtp")):
         return [path]
     root = ET.parse(path).getroot()
     folder = os.path.dirname(os.path.abspath(path))
     return [os.path.join(folder, piece.get("Source")) for piece in root.iter("Piece")]
 
 
+def read_vtu(path, cell_type="tetra"):
+    """(points, GlobalPointIds or None, cells of cell_type) of a .vtu piece,
+    read with VTK's own XML reader. meshio 5.0 misreads the pieces' raw
+    appended arrays (it looks them up by offset among those it has already
+    renamed): on a K = 5 mesh it failed with "buffer size must be a multiple
+    of element size", so until session 20 the sweeps measured no odd K."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+
+    reader = vtkXMLUnstructuredGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    grid = reader.GetOutput()
+    gids = grid.GetPointData().GetArray("GlobalPointIds")
+    gids = None if gids is None else vtk_to_numpy(gids).astype(np.int64).ravel()
+    size = 4 if cell_type == "tetra" else 3
+    vtk_type = 10 if cell_type == "tetra" else 5  # VTK_TETRA, VTK_TRIANGLE
+    if grid.GetNumberOfCells() == 0:
+        return np.zeros((0, 3)), gids, np.zeros((0, size), dtype=np.int64)
+    points = vtk_to_numpy(grid.GetPoints().GetData()).astype(np.float64)
+    types = vtk_to_numpy(grid.GetCellTypesArray())
+    offsets = vtk_to_numpy(grid.GetCells().GetOffsetsArray()).astype(np.int64)
+    conn = vtk_to_numpy(grid.GetCells().GetConnectivityArray()).astype(np.int64)
+    chosen = np.where(types == vtk_type)[0]
+    if ((offsets[chosen + 1] - offsets[chosen]) != size).any():
+        raise ValueError("%s: cells of type %d without %d points" % (path, vtk_type, size))
+    return points, gids, conn[offsets[chosen][:, None] + np.arange(size)]
+
+
 def read_tetrahedra(piece):
-    """(points, tetrahedra) of one file; meshio's Gmsh reader prints blank
-    lines to stdout, which would break the driver's tables, so it is silenced."""
+    """(points, tetrahedra) of one file: a .vtu piece with VTK's reader
+    (read_vtu), the other peers' files with meshio, whose Gmsh reader prints
+    blank lines to stdout, which would break the driver's tables, so it is
+    silenced."""
     import contextlib
     import io
 
+    if piece.endswith(".vtu"):
+        points, _, tets = read_vtu(piece)
+        return points, tets
     import meshio
 
     with contextlib.redirect_stdout(io.StringIO()):

@@ -21,22 +21,16 @@ conforming is true when none of these fails. It also returns the relative
 volume error |V_mesh - V_input| / V_input (the goal is 1e-9, reported apart)
 and the relative area error.
 """
-import contextlib
-import io
 import os
 import sys
-import xml.etree.ElementTree as ET
 from fractions import Fraction
 
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "Benchmarks"))
+from mesh_quality import piece_files, read_vtu  # noqa: E402
+
 AREA_TOLERANCE = 1e-6
-
-
-def pieces(path):
-    root = ET.parse(path).getroot()
-    folder = os.path.dirname(os.path.abspath(path))
-    return [os.path.join(folder, p.get("Source")) for p in root.iter("Piece")]
 
 
 def read_polydata(path):
@@ -60,34 +54,11 @@ def read_polydata(path):
 
 def read_piece(path, cell_type):
     """(points, GlobalPointIds, cells of cell_type) of a .vtu or .vtp piece,
-    read with VTK's own XML readers. meshio 5.0 misreads the pieces' raw
-    appended arrays (it looks them up by offset among those it has already
-    renamed): on a K = 5 mesh it failed with "buffer size must be a multiple
-    of element size", so the sweeps could not check odd K before session 20."""
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
-
+    read with VTK's own XML readers (mesh_quality.read_vtu: meshio misreads
+    the pieces' arrays)."""
     if path.endswith(".vtp"):
         return read_polydata(path)
-    reader = vtkXMLUnstructuredGridReader()
-    reader.SetFileName(path)
-    reader.Update()
-    grid = reader.GetOutput()
-    gids = grid.GetPointData().GetArray("GlobalPointIds")
-    gids = None if gids is None else vtk_to_numpy(gids).astype(np.int64).ravel()
-    size = 4 if cell_type == "tetra" else 3
-    vtk_type = 10 if cell_type == "tetra" else 5  # VTK_TETRA, VTK_TRIANGLE
-    if grid.GetNumberOfCells() == 0:
-        return np.zeros((0, 3)), gids, np.zeros((0, size), dtype=np.int64)
-    points = vtk_to_numpy(grid.GetPoints().GetData()).astype(np.float64)
-    types = vtk_to_numpy(grid.GetCellTypesArray())
-    offsets = vtk_to_numpy(grid.GetCells().GetOffsetsArray()).astype(np.int64)
-    conn = vtk_to_numpy(grid.GetCells().GetConnectivityArray()).astype(np.int64)
-    chosen = np.where(types == vtk_type)[0]
-    if ((offsets[chosen + 1] - offsets[chosen]) != size).any():
-        raise ValueError("%s: cells of type %d without %d points" % (path, vtk_type, size))
-    cells = conn[offsets[chosen][:, None] + np.arange(size)]
-    return points, gids, cells
+    return read_vtu(path, cell_type)
 
 
 def exact_signs(p, volumes):
@@ -110,7 +81,7 @@ def exact_signs(p, volumes):
 def check(pvtu, input_stats):
     problems = []
     all_gids, all_coords, tets = [], [], []
-    for piece in pieces(pvtu):
+    for piece in piece_files(pvtu):
         points, gids, cells = read_piece(piece, "tetra")
         if gids is None:
             if len(cells):
@@ -160,7 +131,7 @@ def check(pvtu, input_stats):
     bfile = os.path.splitext(pvtu)[0] + "_boundary.pvtp"
     if os.path.isfile(bfile):
         ref = []
-        for piece in pieces(bfile):
+        for piece in piece_files(bfile):
             _, bg, tri = read_piece(piece, "triangle")
             if bg is not None and len(tri):
                 ref.append(bg[tri])
