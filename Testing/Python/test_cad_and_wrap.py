@@ -5,8 +5,8 @@
 Runs Scripts/tetmesh.py (mpiexec -n 2 pvbatch) on real files that Debian's
 occt-misc ships in /usr/share/opencascade/data (LGPL-2.1 with the OCCT
 exception; see Testing/Corpus/MANIFEST.md), then checks the result with the
-independent conformity check (Testing/Corpus/conformity.py: numpy, VTK's readers and
-VTK's XML reader only) against the surface tetmesh meshed (--save-surface):
+independent conformity check (Testing/Corpus/conformity.py: numpy and
+VTK's XML readers only) against the surface tetmesh meshed (--save-surface):
 
   step, iges, brep   a CAD solid: conforming, and CADFaceId on the boundary
                      port names a face of the file for every triangle and
