@@ -29,6 +29,7 @@ import argparse
 import json
 import math
 import os
+import re
 import sys
 import time
 
@@ -231,8 +232,8 @@ def recut_attempts(cutter, strategy):
 
 
 def recut_if_stages_fail(run, errors, times, cutter, stages, strategy, most_recuts):
-    """Runs the stages after the cut. Where one of them fails, a cut made
-    otherwise (recut_attempts) may succeed, as a user would try by hand: the
+    """Runs the stages after the cut. Where one of them fails on a subdomain
+    or an interface, a cut made otherwise (recut_attempts) may succeed, as a user would try by hand: the
     stages run again from each of at most most_recuts other cuts, each
     beginning from the cutter's settings as asked, with a warning naming the
     failure and the change. times["failed attempts"] sums the seconds of the
@@ -251,7 +252,9 @@ def recut_if_stages_fail(run, errors, times, cutter, stages, strategy, most_recu
         except Failure as failure:
             if attempts is None:
                 attempts = recut_attempts(cutter, strategy)[:max(most_recuts, 0)]
-            if len(failed) == len(attempts):
+            # only what a cut can cause: a failure naming a subdomain or an
+            # interface (not, say, a size that cannot fit in memory)
+            if len(failed) == len(attempts) or not re.search(r"subdomain|interface", str(failure), re.I):
                 raise
             change, description = attempts[len(failed)]
             failed.append({"failure": str(failure), "change": description})
