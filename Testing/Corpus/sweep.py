@@ -123,13 +123,21 @@ def calibrate(name, surface, stats, args, workdir):
     """The volume bound that gives serial TetGen 50-100k tetrahedra, and serial TetGen's result there."""
     target = args.target_tets
     bound = stats["volume"] / target
+    # never coarser than about 1000 tetrahedra of the bound in the volume: on
+    # a thin sheet (Prusa's aq_bed) serial TetGen's count is its boundary's
+    # and hardly moves with the bound, which grew 77 x per try to a size
+    # larger than the part
+    largest = stats["volume"] / 1000.0
     tried = []
-    for _ in range(4):
+    for attempt in range(4):
         ref = serial_tetgen(surface, bound, workdir, args.serial_switches, args.timeout)
         tried.append((bound, ref.get("tetrahedra")))
-        if not ref["ok"] or 50000 <= ref["tetrahedra"] <= 100000:
+        if not ref["ok"] or 50000 <= ref["tetrahedra"] <= 100000 or attempt == 3:
+            break  # the last try's bound stays: serial and the pipeline get the same one
+        scaled = min(bound * ref["tetrahedra"] / float(target), largest)
+        if scaled == bound:
             break
-        bound *= ref["tetrahedra"] / float(target)
+        bound = scaled
     ref["calibration"] = tried
     ref["bound"] = bound
     ref["size"] = (6 * math.sqrt(2) * bound) ** (1.0 / 3.0)
@@ -310,21 +318,24 @@ def summarize(results, serial, names, exact=True, mode="nearly coplanar input tr
         rs = [r for r in results if r["surface"] == name]
         if not rs:
             continue
-        good = [r for r in rs if r["ok"] and "tetrahedra" in r.get("quality", {})]
+        # ran: the runs that meshed; good: those whose quality was measured
+        # too (all of them, unless reading a mesh failed)
+        ran = [r for r in rs if r["ok"]]
+        good = [r for r in ran if "tetrahedra" in r.get("quality", {})]
         s = serial.get(name, {})
         under, dih = ratios(good, s)
         under_y, dih_y = ratios(good, s.get("with_Y", {}))
-        vols = [r["conformity"].get("volume_error") for r in good if r.get("conformity", {}).get("volume_error") is not None]
+        vols = [r["conformity"].get("volume_error") for r in ran if r.get("conformity", {}).get("volume_error") is not None]
         vmax = max(vols) if vols else None
         # a mode that moves the surface is checked against its own surface:
         # the boundary area no longer equals the input's
-        nconf = sum(1 for r in good if (r.get("conformity", {}).get("conforming") if exact
-                                        else topologically_conforming(r)))
+        nconf = sum(1 for r in ran if (r.get("conformity", {}).get("conforming") if exact
+                                       else topologically_conforming(r)))
         met = (len(good) == len(rs) and nconf == len(rs) and under is not None and under <= GOAL_UNDER10_RATIO
                and dih is not None and dih >= GOAL_DIHEDRAL_RATIO and vmax is not None
                and (vmax <= GOAL_VOLUME_ERROR or not exact))
         lines.append("| %s | %d / %d | %d | %s | %s | %s / %s | %s | %s | %s |" % (
-            name, len(good), len(rs), nconf, fmt(under, "%.2f"), fmt(dih, "%.2f"), fmt(under_y, "%.2f"),
+            name, len(ran), len(rs), nconf, fmt(under, "%.2f"), fmt(dih, "%.2f"), fmt(under_y, "%.2f"),
             fmt(dih_y, "%.2f"), fmt(vmax, "%.1e"), "yes" if met else "no", fmt(count_ratio(good, s), "%.2f")))
     failures = [r for r in results if not r["ok"]]
     if failures:
