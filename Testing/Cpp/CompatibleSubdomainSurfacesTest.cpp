@@ -11,7 +11,6 @@
 // of the box with a cavity at K = 7 kept an edge 218 times its shortest, and
 // one triangle of 17.8 degrees away from the boundary, without it.
 #include "ContourSubdivision.h"
-#include "OffFormat.h"
 #include "SelfIntersectionCheck.h"
 #include "TestSurfaces.h"
 #include "VolumeBalancedDecomposition.h"
@@ -97,12 +96,7 @@ INSTANTIATE_TEST_SUITE_P(KAndStrategy, CompatibleSubdomainSurfaces,
 // regions it changed; TetGen refused subdomain 4.
 TEST(CompatibleSubdomainSurfaces, NoSubdomainFoldsWhereAnEdgeOfABentRegionIsSplit)
 {
-  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/freecad_tcmt1107_4.off");
-  ASSERT_TRUE(file.ok) << file.error;
-  DecompositionOptions options;
-  options.numberOfSubdomains = 16;
-  options.direction = CutDirection::Inertia; // as the cutter's default
-  const DecompositionResult d = decomposeVolumeBalanced(file.data.surface, options);
+  const DecompositionResult d = decomposeDataFile("regression/freecad_tcmt1107_4.off", 16);
   ASSERT_TRUE(d.ok) << d.error;
   SurfaceComplex c = d.complex;
   const InterfaceFigures figures = triangulateAllInterfaces(c);

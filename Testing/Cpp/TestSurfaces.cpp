@@ -222,6 +222,21 @@ DecompositionOptions stageCaseOptions(int K, CutStrategy strategy)
   return options;
 }
 
+DecompositionResult decomposeDataFile(const std::string& relativePath, int K)
+{
+  const OffReadResult file = readOffFile(std::string(PTM_DATA_DIR) + "/" + relativePath);
+  if (!file.ok)
+  {
+    DecompositionResult failed;
+    failed.error = file.error;
+    return failed;
+  }
+  DecompositionOptions options;
+  options.numberOfSubdomains = K;
+  options.direction = CutDirection::Inertia; // as the cutter's default
+  return decomposeVolumeBalanced(file.data.surface, options);
+}
+
 InterfaceFigures triangulateAllInterfaces(SurfaceComplex& c)
 {
   InterfaceFigures figures;

@@ -43,6 +43,12 @@ std::vector<NamedSurface> namedTestSurfaces();
 // recursive bisection.
 DecompositionOptions stageCaseOptions(int K, CutStrategy strategy);
 
+// A file of Data/ (path relative to it) cut into K subdomains by recursive
+// bisection along the inertia axes, the cutter's defaults: the regression
+// cases of real surfaces. An unreadable file gives a result with ok false
+// and the reader's error.
+DecompositionResult decomposeDataFile(const std::string& relativePath, int K);
+
 // Replaces every interface region of a decomposition by its quality
 // triangulation (default bounds), like the InterfaceTriangulator filter does on
 // one rank: new points appended, interface triangles with their pair and

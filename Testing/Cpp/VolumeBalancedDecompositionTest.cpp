@@ -624,12 +624,7 @@ TEST(VolumeBalancedDecomposition, CoarseCadNeverCrossesItself)
 // subdomain failed. No two points of the complex may lie within round-off.
 TEST(VolumeBalancedDecomposition, NoPointDuplicatedWithinRoundOff)
 {
-  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/prusa_cylinder.off");
-  ASSERT_TRUE(file.ok) << file.error;
-  DecompositionOptions options;
-  options.numberOfSubdomains = 64;
-  options.direction = CutDirection::Inertia; // as the cutter's default
-  const DecompositionResult r = decomposeVolumeBalanced(file.data.surface, options);
+  const DecompositionResult r = decomposeDataFile("regression/prusa_cylinder.off", 64);
   ASSERT_TRUE(r.ok) << r.error;
   expectClosedSubdomains(r.complex, "prusa cylinder");
   const std::vector<Vec3>& p = r.complex.points;
