@@ -1,5 +1,6 @@
 #include "RankCollectives.h"
 
+#include "Fnv1a.h"
 #include "PhaseLog.h"
 
 #include "vtkAlgorithm.h"
@@ -52,18 +53,6 @@ std::vector<T> gather(vtkMultiProcessController* c, const std::vector<T>& local,
     countsOut->assign(counts.begin(), counts.end());
   }
   return all;
-}
-
-// FNV-1a over bytes, continuing from `hash`
-constexpr std::uint64_t kFnvOffset = 1469598103934665603ull;
-std::uint64_t fnv1a(std::uint64_t hash, const void* data, std::size_t bytes)
-{
-  const unsigned char* b = static_cast<const unsigned char*>(data);
-  for (std::size_t i = 0; i < bytes; ++i)
-  {
-    hash = (hash ^ b[i]) * 1099511628211ull;
-  }
-  return hash;
 }
 
 // Collective: true on every rank when every rank passed the same `facts`
@@ -185,7 +174,7 @@ bool agreeAnyAborted(vtkMultiProcessController* c, vtkAlgorithm* algorithm)
 
 TriangleSurface wholeSurfaceOnEveryRank(vtkMultiProcessController* c, const TriangleSurface& local)
 {
-  std::uint64_t hash = fnv1a(kFnvOffset, local.points.data(), local.points.size() * sizeof(Vec3));
+  std::uint64_t hash = fnv1a(kFnv1aOffset, local.points.data(), local.points.size() * sizeof(Vec3));
   hash = fnv1a(hash, local.triangles.data(), local.triangles.size() * sizeof(Triangle));
   return sameOnEveryRank(c, { static_cast<long long>(local.points.size()),
                               static_cast<long long>(local.triangles.size()), static_cast<long long>(hash) })
@@ -195,7 +184,7 @@ TriangleSurface wholeSurfaceOnEveryRank(vtkMultiProcessController* c, const Tria
 
 std::vector<double> wholeValuesOnEveryRank(vtkMultiProcessController* c, const std::vector<double>& local)
 {
-  const std::uint64_t hash = fnv1a(kFnvOffset, local.data(), local.size() * sizeof(double));
+  const std::uint64_t hash = fnv1a(kFnv1aOffset, local.data(), local.size() * sizeof(double));
   return sameOnEveryRank(c, { static_cast<long long>(local.size()), static_cast<long long>(hash) })
     ? local
     : gather(c, local, nullptr);

@@ -1,6 +1,7 @@
 #include "TetGenSubdomainMesher.h"
 
 #include "BoundarySliverRepair.h"
+#include "Fnv1a.h"
 #include "SelfIntersectionCheck.h"
 #include "TetrahedronQuality.h"
 
@@ -1295,12 +1296,7 @@ long long machineIdentity()
 {
   char name[256] = {};
   ::gethostname(name, sizeof(name) - 1);
-  std::uint64_t hash = 1469598103934665603ull; // FNV-1a
-  for (const char* c = name; *c; ++c)
-  {
-    hash = (hash ^ static_cast<unsigned char>(*c)) * 1099511628211ull;
-  }
-  return static_cast<long long>(hash >> 1);
+  return static_cast<long long>(fnv1a(kFnv1aOffset, name, std::strlen(name)) >> 1);
 }
 
 double physicalMemoryBytes()
