@@ -237,8 +237,9 @@ def recut_if_stages_fail(run, errors, times, cutter, stages, strategy, most_recu
     stages run again from each of at most most_recuts other cuts, each
     beginning from the cutter's settings as asked, with a warning naming the
     failure and the change. times["failed attempts"] sums the seconds of the
-    cuts and stages that failed. Returns the list of {"failure", "change"}
-    of the attempts that failed (empty when the first cut succeeded);
+    cuts and stages that failed. Returns the list of {"failure", "change",
+    "settings"} (the cutter properties the next attempt changed) of the
+    attempts that failed (empty when the first cut succeeded);
     raises the last failure if every attempt failed."""
     asked = {name: cutter.GetPropertyValue(name)
              for name in ("RemoveFlatCrossings", "PlaneTiltAngle", "PlaneAlignmentAngle")}
@@ -257,7 +258,7 @@ def recut_if_stages_fail(run, errors, times, cutter, stages, strategy, most_recu
             if len(failed) == len(attempts) or not re.search(r"subdomain|interface", str(failure), re.I):
                 raise
             change, description = attempts[len(failed)]
-            failed.append({"failure": str(failure), "change": description})
+            failed.append({"failure": str(failure), "change": description, "settings": change})
             sys.stderr.write("tetmesh: warning: %s; %s\n" % (failure, description))
             sys.stderr.flush()
             del errors.messages[:]
@@ -412,7 +413,7 @@ def main(argv):
                                                   "FlatCrossingsRemoved") or 0),
         "recuts": recuts,
         "kept_flat_crossings_after_failure": next(
-            (r["failure"] for r in recuts if "--keep-flat-crossings" in r["change"]), None),
+            (r["failure"] for r in recuts if r["settings"].get("RemoveFlatCrossings") == 0), None),
         "interfaces": {name: int(field_value(interfaces.GetClientSideObject().GetOutputDataObject(0), field) or 0)
                        for name, field in (("contour_points_added", "ContourPointsAdded"),
                                            ("subdivision_retries", "ContourSubdivisionRetries"),

@@ -140,6 +140,14 @@ bool volumesAddUp(const SurfaceComplex& c, double parts, double whole)
   return std::fabs(parts - whole) <= tolerance;
 }
 
+// Whether a region's boundary has a point of the cut: numbered
+// `firstNewPoint` or above (points are appended as a cut makes them).
+bool hasPointFrom(const InterfaceRegion& region, Index firstNewPoint)
+{
+  return std::any_of(region.edges.begin(), region.edges.end(),
+    [&](const DirectedEdge& e) { return e[0] >= firstNewPoint || e[1] >= firstNewPoint; });
+}
+
 // The interface regions of a part and what a cut did to them. A region of
 // one of the cut's two parts that reaches into the box of the new interface
 // (`cutBox`) may have been split by the cut, and is triangulated anew as a
@@ -187,9 +195,7 @@ PartRegions regionsOfPart(
     r.boxes.push_back(box);
     const bool shared = region.pair[0] == below || region.pair[0] == above || region.pair[1] == below ||
       region.pair[1] == above;
-    const std::vector<Index>& own = r.points.back();
-    const bool gotPoint = std::any_of(own.begin(), own.end(), [&](Index v) { return v >= firstNewPoint; });
-    changed.push_back((cutPart || shared || gotPoint) && box.overlaps(cutBox));
+    changed.push_back((cutPart || shared || hasPointFrom(region, firstNewPoint)) && box.overlaps(cutBox));
     if (changed.back())
     {
       changedBoxes.push_back(box);
@@ -882,11 +888,7 @@ bool PartCut::soundParts(const Trial& trial) const
   const Index firstNewPoint = static_cast<Index>(c.points.size());
   for (const InterfaceRegion& region : trial.complex.interfaces)
   {
-    bool gotPoint = false;
-    for (const DirectedEdge& e : region.edges)
-    {
-      gotPoint = gotPoint || e[0] >= firstNewPoint;
-    }
+    const bool gotPoint = hasPointFrom(region, firstNewPoint);
     for (int k = 0; k < 2; ++k)
     {
       const int other = region.pair[1 - k];
