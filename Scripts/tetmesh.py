@@ -71,7 +71,8 @@ def parse_arguments(argv):
                    help="keep every contour point of the cuts, also those inside planar faces (default: they "
                    "are taken out, and the run is made again keeping them if TetGen fails)")
     p.add_argument("--recut-attempts", type=int, default=3,
-                   help="where a stage after the cut fails (a subdomain crossing itself, TetGen failing on one), "
+                   help="where a stage after the cut fails on a subdomain or an interface (one crossing itself, TetGen "
+                   "failing on one), "
                    "cut again at most this many times, otherwise (keeping flat crossings, untilted planes, "
                    "planes not turned to earlier lines), with a warning; 0 fails at once (default 3)")
     p.add_argument("--no-boundary-refinement", action="store_true",
@@ -205,18 +206,16 @@ def field_value(polydata, name):
 
 
 def recut_attempts(cutter, strategy):
-    """The cutter settings tried, in order, after the stages following the
-    cut failed: the cut as asked; keeping the contour points it took out of
-    planar faces (where it took some: TetGen may fail on the thin slabs that
-    leaves and mesh them with the crossings kept, OCCT's Top and Bottom at 32
-    parallel planes); recursive bisection's planes untilted; and planes not
-    turned towards lines already drawn. Each is the cut as asked with that
-    one change, but the last, which keeps the tilt off too. The last two are
-    for subdomains a cut leaves crossing themselves where its own check
-    cannot see it: FreeCAD's TCMT1107_4 at K = 16 by bisection, where a
-    plane tilted and turned through a vertex another plane had bent off
-    itself, so two interfaces of subdomain 4 folded onto each other; with
-    either change it meshes (session 20)."""
+    """The other cuts tried, in order, after a stage following the cut as
+    asked failed: keeping the contour points it took out of planar faces
+    (where it took some: TetGen may fail on the thin slabs that leaves and
+    mesh them with the crossings kept, OCCT's Top and Bottom at 32 parallel
+    planes); recursive bisection's planes untilted; and planes neither
+    tilted nor turned towards lines already drawn. Each is the cut as asked
+    with that change. The last two are for a subdomain a cut leaves crossing
+    itself where the cutter's own check does not see it: FreeCAD's
+    TCMT1107_4 at K = 16 by bisection was such a case until session 20 fixed
+    the check, and meshed with untilted planes."""
     removed = field_value(cutter.GetClientSideObject().GetOutputDataObject(0), "FlatCrossingsRemoved")
     attempts = []
     if removed:
@@ -233,8 +232,8 @@ def recut_attempts(cutter, strategy):
 
 def recut_if_stages_fail(run, errors, times, cutter, stages, strategy, most_recuts):
     """Runs the stages after the cut. Where one of them fails on a subdomain
-    or an interface, a cut made otherwise (recut_attempts) may succeed, as a user would try by hand: the
-    stages run again from each of at most most_recuts other cuts, each
+    or an interface, a cut made otherwise (recut_attempts) may succeed, as a
+    user would try by hand: the stages run again from each of at most most_recuts other cuts, each
     beginning from the cutter's settings as asked, with a warning naming the
     failure and the change. times["failed attempts"] sums the seconds of the
     cuts and stages that failed. Returns the list of {"failure", "change",
