@@ -1,0 +1,245 @@
+#include "LocalThickness.h"
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Orthogonal_incremental_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/property_map.h>
+
+#include <boost/iterator/counting_iterator.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <limits>
+#include <memory>
+#include <numeric>
+
+namespace ptm
+{
+namespace
+{
+/// @name Rays inward
+/// @{
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using CgalTriangle = Kernel::Triangle_3;
+using TriangleIterator = std::vector<CgalTriangle>::const_iterator;
+using Primitive = CGAL::AABB_triangle_primitive<Kernel, TriangleIterator>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+
+// Rays start about `spacing` apart: in rows parallel to a triangle's
+// longest edge, so a long thin triangle (a CAD export's cylinder wall) gets
+// rays along its length only, not n^2 / 2 of them over a sliver (that cost
+// 2.4 s on OCCT's Bottom, 31,000 triangles). At most kMaxRays rows, and
+// rays per row, so a huge triangle cannot cost millions.
+constexpr int kMaxRays = 64;
+
+int raysAcross(double length, double spacing)
+{
+  return std::clamp(static_cast<int>(std::ceil(length / spacing)), 1, kMaxRays);
+}
+
+// Where the rays of triangle abc start: rows between its longest edge and
+// the opposite corner, each split evenly; every point lies strictly inside,
+// so no ray starts on a neighbour.
+void rayOrigins(Vec3 a, Vec3 b, Vec3 c, double spacing, std::vector<Vec3>& origins)
+{
+  origins.clear();
+  if (norm(c - b) > norm(b - a) && norm(c - b) >= norm(a - c))
+  {
+    std::swap(a, c); // bc longest: a becomes the far corner
+  }
+  else if (norm(a - c) > norm(b - a))
+  {
+    std::swap(b, c); // ca longest
+  }
+  const Vec3 ab = b - a;
+  const double length = norm(ab);
+  const double height = norm(cross(ab, c - a)) / length;
+  const int rows = raysAcross(height, spacing);
+  for (int j = 0; j < rows; ++j)
+  {
+    const double up = (j + 0.5) / rows;
+    const Vec3 left = a + up * (c - a), right = b + up * (c - b);
+    const int count = raysAcross((1.0 - up) * length, spacing);
+    for (int i = 0; i < count; ++i)
+    {
+      origins.push_back(left + ((i + 0.5) / count) * (right - left));
+    }
+  }
+}
+
+// The distance from `origin` along `direction` (unit) to the first triangle
+// other than `self` within `limit`; +inf if there is none. A segment of that
+// length, not a ray: the tree then opens only the boxes near it (an unbounded
+// ray cost 330 us each on OCCT's Bottom, 31,000 long thin triangles).
+double firstHit(const Tree& tree, const std::vector<CgalTriangle>& triangles, std::size_t self,
+  const Vec3& origin, const Vec3& direction, double limit)
+{
+  const Vec3 end = origin + limit * direction;
+  const Point o(origin[0], origin[1], origin[2]);
+  const Kernel::Segment_3 query(o, Point(end[0], end[1], end[2]));
+  const TriangleIterator mine = triangles.begin() + static_cast<std::ptrdiff_t>(self);
+  double nearest = std::numeric_limits<double>::infinity();
+  std::vector<Tree::Intersection_and_primitive_id<Kernel::Segment_3>::Type> hits;
+  tree.all_intersections(query, std::back_inserter(hits));
+  for (const auto& [where, id] : hits)
+  {
+    if (id == mine)
+    {
+      continue;
+    }
+    if (const Point* p = boost::get<Point>(&where))
+    {
+      nearest = std::min(nearest, std::sqrt(CGAL::squared_distance(o, *p)));
+    }
+    else if (const Kernel::Segment_3* s = boost::get<Kernel::Segment_3>(&where))
+    {
+      nearest = std::min(nearest,
+        std::sqrt(std::min(CGAL::squared_distance(o, s->source()), CGAL::squared_distance(o, s->target()))));
+    }
+  }
+  return nearest;
+}
+/// @}
+
+/// @name The capped field
+/// @{
+using SearchKernel = CGAL::Simple_cartesian<double>;
+using SearchPoint = SearchKernel::Point_3;
+// the tree holds sample indices; the points live in a vector beside it
+using PointMap = CGAL::Pointer_property_map<SearchPoint>::type;
+using Traits = CGAL::Search_traits_adapter<std::size_t, PointMap, CGAL::Search_traits_3<SearchKernel>>;
+using Search = CGAL::Orthogonal_incremental_neighbor_search<Traits>;
+
+// The samples in a k-d tree, visited nearest first until no farther one can
+// give less: a sample at distance d gives at least thinnest + g d. A grid
+// of cubes was tried first: on a sheet thinner than its cubes by 100 x
+// (Prusa's aq_bed) each query visited some 400,000 samples.
+class ThicknessField
+{
+public:
+  ThicknessField(const std::vector<double>& xyzt, double limit)
+    : Limit(limit)
+    , Floor(kThicknessFloor * limit)
+  {
+    const std::size_t n = xyzt.size() / 4;
+    this->Points.reserve(n);
+    this->Thickness.reserve(n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      this->Points.emplace_back(xyzt[4 * i], xyzt[4 * i + 1], xyzt[4 * i + 2]);
+      this->Thickness.push_back(xyzt[4 * i + 3]);
+      this->Thinnest = std::min(this->Thinnest, xyzt[4 * i + 3]);
+    }
+    this->Map = CGAL::make_property_map(this->Points);
+    this->Tree = std::make_unique<Search::Tree>(boost::counting_iterator<std::size_t>(0),
+      boost::counting_iterator<std::size_t>(n), Search::Tree::Splitter(), Traits(this->Map));
+    this->Tree->build(); // not lazily inside a query
+  }
+
+  // +inf where no sample counts
+  double At(const Vec3& p) const
+  {
+    double best = std::numeric_limits<double>::infinity();
+    const Search search(*this->Tree, SearchPoint(p[0], p[1], p[2]), 0.0, true, Search::Distance(this->Map));
+    for (auto it = search.begin(); it != search.end(); ++it)
+    {
+      const double d = std::sqrt(it->second);
+      if (this->Thinnest + kThicknessGradation * d >= std::min(best, this->Limit))
+      {
+        break;
+      }
+      best = std::min(best, this->Thickness[it->first] + kThicknessGradation * d);
+    }
+    return std::max(best, this->Floor);
+  }
+
+private:
+  double Limit;
+  double Floor;
+  double Thinnest = std::numeric_limits<double>::infinity();
+  std::vector<SearchPoint> Points;
+  std::vector<double> Thickness;
+  PointMap Map;
+  std::unique_ptr<Search::Tree> Tree;
+};
+/// @}
+} // namespace
+
+std::vector<double> thicknessSamples(const TriangleSurface& s, double limit)
+{
+  std::vector<double> xyzt;
+  if (!(limit > 0) || s.triangles.empty())
+  {
+    return xyzt;
+  }
+  std::vector<CgalTriangle> triangles;
+  triangles.reserve(s.triangles.size());
+  for (const Triangle& t : s.triangles)
+  {
+    const Vec3 &a = s.points[t[0]], &b = s.points[t[1]], &c = s.points[t[2]];
+    triangles.emplace_back(Point(a[0], a[1], a[2]), Point(b[0], b[1], b[2]), Point(c[0], c[1], c[2]));
+  }
+  Tree tree(triangles.begin(), triangles.end());
+  const double nearest = 1e-9 * boundingBoxDiagonal(s.points);
+  std::vector<Vec3> origins;
+  for (std::size_t t = 0; t < s.triangles.size(); ++t)
+  {
+    const Vec3 &a = s.points[s.triangles[t][0]], &b = s.points[s.triangles[t][1]], &c = s.points[s.triangles[t][2]];
+    const Vec3 inward = -1.0 * normalized(cross(b - a, c - a));
+    if (!(norm(inward) > 0))
+    {
+      continue; // a degenerate triangle has no inward direction
+    }
+    // first limit / 2 apart; where a wall turns out thinner, again at its
+    // thickness, so the cap between two samples is not much above it
+    double spacing = 0.5 * limit;
+    for (int pass = 0; pass < 2; ++pass)
+    {
+      double thinnest = std::numeric_limits<double>::infinity();
+      rayOrigins(a, b, c, spacing, origins);
+      for (const Vec3& o : origins)
+      {
+        const double d = firstHit(tree, triangles, t, o, inward, limit);
+        if (d > nearest && d < limit)
+        {
+          xyzt.insert(xyzt.end(), { o[0], o[1], o[2], d });
+          thinnest = std::min(thinnest, d);
+        }
+      }
+      const double finer = std::max(thinnest, kThicknessFloor * limit);
+      if (!(finer < 0.5 * spacing))
+      {
+        break;
+      }
+      spacing = finer;
+    }
+  }
+  return xyzt;
+}
+
+SizeFunction thicknessCappedSize(const SizeFunction& base, const std::vector<double>& xyzt, double limit)
+{
+  if (xyzt.size() < 4 || !(limit > 0))
+  {
+    return base;
+  }
+  auto field = std::make_shared<const ThicknessField>(xyzt, limit);
+  return [field, base](const Vec3& p) {
+    const double thin = field->At(p);
+    if (!base)
+    {
+      return thin;
+    }
+    const double b = base(p);
+    return b > 0 && b < thin ? b : thin;
+  };
+}
+} // namespace ptm

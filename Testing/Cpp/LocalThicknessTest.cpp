@@ -1,0 +1,78 @@
+#include "LocalThickness.h"
+#include "TestSurfaces.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace ptm;
+using namespace ptm::test;
+
+namespace
+{
+// A plate 10 x 8 x 0.5, each face two triangles (as a CAD export writes it).
+TriangleSurface plate()
+{
+  return subdividedBox({ 0, 0, 0 }, { 10, 8, 0.5 }, 1);
+}
+} // namespace
+
+TEST(LocalThickness, RaysAcrossAPlateMeasureItsThickness)
+{
+  const std::vector<double> xyzt = thicknessSamples(plate(), 2.0);
+  ASSERT_FALSE(xyzt.empty());
+  int across = 0;
+  for (std::size_t i = 0; i < xyzt.size(); i += 4)
+  {
+    // only the two large faces are thinner than the limit across; a ray from
+    // a side face crosses 8 or 10, beyond the limit, and is left out
+    EXPECT_NEAR(xyzt[i + 3], 0.5, 1e-12);
+    EXPECT_TRUE(std::fabs(xyzt[i + 2]) < 1e-12 || std::fabs(xyzt[i + 2] - 0.5) < 1e-12);
+    ++across;
+  }
+  // the big faces are longer than the limit, so each triangle sends many rays
+  EXPECT_GT(across, 4 * 20);
+}
+
+TEST(LocalThickness, ACubeThickerThanTheLimitGivesNoSample)
+{
+  EXPECT_TRUE(thicknessSamples(subdividedBox({ 0, 0, 0 }, { 1, 1, 1 }, 2), 0.5).empty());
+}
+
+TEST(LocalThickness, TheCapIsTheThicknessAtTheWallAndGrowsAway)
+{
+  const double limit = 2.0;
+  const SizeFunction size = thicknessCappedSize({}, thicknessSamples(plate(), limit), limit);
+  ASSERT_TRUE(size);
+  // on a face: a sample lies at most a ray spacing (limit / 2) away
+  const double onFace = size({ 5, 4, 0.5 });
+  EXPECT_GE(onFace, 0.5);
+  EXPECT_LE(onFace, 0.5 + kThicknessGradation * 0.5 * limit);
+  // far from every sample: no cap
+  EXPECT_TRUE(std::isinf(size({ 100, 100, 100 })));
+  // a base field below the cap wins, and a base that is not set gives way
+  const SizeFunction finer = thicknessCappedSize([](const Vec3&) { return 0.1; }, thicknessSamples(plate(), limit), limit);
+  EXPECT_DOUBLE_EQ(finer({ 5, 4, 0.5 }), 0.1);
+  const SizeFunction unset = thicknessCappedSize([](const Vec3&) { return 0.0; }, thicknessSamples(plate(), limit), limit);
+  EXPECT_DOUBLE_EQ(unset({ 5, 4, 0.5 }), onFace);
+}
+
+TEST(LocalThickness, TheCapNeverFallsUnderItsFloor)
+{
+  const double limit = 100.0; // the plate is 0.5 thick, under 100 / 64
+  const std::vector<double> xyzt = thicknessSamples(plate(), limit);
+  ASSERT_GE(xyzt.size(), 4u);
+  const SizeFunction size = thicknessCappedSize({}, xyzt, limit);
+  std::size_t thinnest = 0;
+  for (std::size_t i = 4; i < xyzt.size(); i += 4)
+  {
+    thinnest = xyzt[i + 3] < xyzt[thinnest + 3] ? i : thinnest;
+  }
+  EXPECT_NEAR(xyzt[thinnest + 3], 0.5, 1e-12);
+  EXPECT_DOUBLE_EQ(size({ xyzt[thinnest], xyzt[thinnest + 1], xyzt[thinnest + 2] }), kThicknessFloor * limit);
+}
+
+TEST(LocalThickness, TheSameSurfaceGivesTheSameSamples)
+{
+  EXPECT_EQ(thicknessSamples(plate(), 2.0), thicknessSamples(plate(), 2.0));
+}
