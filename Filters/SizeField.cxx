@@ -1,5 +1,6 @@
 #include "SizeField.h"
 
+#include "LocalThickness.h"
 #include "SampledSize.h"
 #include "SurfaceComplexArrays.h"
 
@@ -105,6 +106,39 @@ SizeField complexSizeField(const std::string& expression, vtkFieldData* fieldDat
     return SizeField{};
   }
   return sizeFieldOfSamples(samples, error);
+}
+
+void addThicknessSamples(vtkFieldData* fieldData, const std::vector<double>& xyzt, double limit)
+{
+  if (xyzt.empty())
+  {
+    return;
+  }
+  vtkNew<vtkDoubleArray> values;
+  values->SetName(arrays::ThicknessSamples);
+  values->SetNumberOfComponents(4);
+  values->SetNumberOfTuples(static_cast<vtkIdType>(xyzt.size() / 4));
+  std::copy(xyzt.begin(), xyzt.end(), values->GetPointer(0));
+  fieldData->AddArray(values);
+  vtkNew<vtkDoubleArray> bound;
+  bound->SetName(arrays::ThicknessLimit);
+  bound->InsertNextValue(limit);
+  fieldData->AddArray(bound);
+}
+
+SizeFunction boundarySizeOf(const SizeField& field, vtkFieldData* fieldData)
+{
+  auto* values =
+    fieldData ? vtkDoubleArray::SafeDownCast(fieldData->GetAbstractArray(arrays::ThicknessSamples)) : nullptr;
+  auto* bound =
+    fieldData ? vtkDoubleArray::SafeDownCast(fieldData->GetAbstractArray(arrays::ThicknessLimit)) : nullptr;
+  if (!values || values->GetNumberOfComponents() != 4 || !bound || bound->GetNumberOfTuples() != 1)
+  {
+    return field.size;
+  }
+  const double* v = values->GetPointer(0);
+  return thicknessCappedSize(field.size, std::vector<double>(v, v + 4 * values->GetNumberOfTuples()),
+    bound->GetValue(0));
 }
 
 bool sizesAt(const SizeField& field, const std::vector<Vec3>& points, std::vector<double>& sizes,

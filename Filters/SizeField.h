@@ -57,6 +57,15 @@ SizeSamples sizeSamplesOf(vtkFieldData* fieldData);
 // samples in the complex's field data; an error when both are given.
 SizeField complexSizeField(const std::string& expression, vtkFieldData* fieldData, std::string& error);
 
+// The cutter's thickness samples (LocalThickness.h) as field data of the
+// complex (ThicknessSamples, ThicknessLimit); nothing for no sample.
+void addThicknessSamples(vtkFieldData* fieldData, const std::vector<double>& xyzt, double limit);
+
+// The size the triangulator and the mesher put boundary points by: `field`
+// capped by the complex's thickness samples, or `field` alone without them.
+// Every rank reads the same samples, so both sides of an interface agree.
+SizeFunction boundarySizeOf(const SizeField& field, vtkFieldData* fieldData);
+
 // The field at `points`; false with `error` naming the first point where it
 // is not a positive finite size.
 bool sizesAt(const SizeField& field, const std::vector<Vec3>& points, std::vector<double>& sizes,

@@ -30,6 +30,10 @@ constexpr const char* InputMeanEdgeLength = "InputMeanEdgeLength"; // double: th
 // the cutter's SizeArray (SizeField.h): double x4 per sample (x, y, z, size), and the array's name
 constexpr const char* SizeFieldSamples = "SizeFieldSamples";
 constexpr const char* SizeFieldArray = "SizeFieldArray"; // string
+// the cutter's SizeByThickness (LocalThickness.h): double x4 per sample (x, y,
+// z, thickness), and the size they were measured under (double, one value)
+constexpr const char* ThicknessSamples = "ThicknessSamples";
+constexpr const char* ThicknessLimit = "ThicknessLimit";
 
 // CAD input (vtkCADSurfaceReader): the CAD face every triangle came from
 constexpr const char* CADFaceId = "CADFaceId"; // cell data, vtkIdType: index in the TopExp face map
@@ -55,7 +59,7 @@ constexpr const char* InterfaceMinimumAngle = "InterfaceMinimumAngle";
 // The facts of earlier stages that every later stage copies from its input's
 // field data to its output's (PolyDataConversion.h: passOnFieldData).
 constexpr const char* PassedOn[] = { BalanceCriterionName, MaximumImbalance, SourceFaceCADFaceId,
-  SizeFieldSamples, SizeFieldArray, ContourPointsAdded, ContourSubdivisionRetries, InterfacesKeptWhole,
+  SizeFieldSamples, SizeFieldArray, ThicknessSamples, ThicknessLimit, ContourPointsAdded, ContourSubdivisionRetries, InterfacesKeptWhole,
   InterfacesTriangulatedAgain, InterfaceNewPoints,
   InterfaceTrianglesBelowMinimumAngle, InterfaceTrianglesBelowMinimumAngleAwayFromBoundary,
   EncroachedBoundarySegments, InterfaceMinimumAngle };

@@ -567,11 +567,13 @@ int vtkInterfaceTriangulator::RequestData(
   {
     return run.Failure();
   }
-  options.sizeAt = field.size;
+  // the field capped where the input is thinner than the size (the cutter's
+  // ThicknessSamples), read alike on every rank
+  options.sizeAt = ptm::boundarySizeOf(field, input ? input->GetFieldData() : nullptr);
 
   ptm::ContourSubdivisionOptions subdivision;
   subdivision.size = this->MaximumEdgeLength > 0 ? this->MaximumEdgeLength : piece.inputMeanEdgeLength;
-  subdivision.sizeAt = field.size;
+  subdivision.sizeAt = options.sizeAt;
   subdivision.minimumAngleDegrees = this->MinimumAngle;
   Triangulated t;
   const int status = subdivideAndTriangulate(this, run, controller, piece,

@@ -689,7 +689,7 @@ int vtkParallelTetMesher::RequestData(
   refinement.size = regularTetrahedronEdge(options.maximumVolume);
   refinement.minimumAngleDegrees = this->BoundaryMinimumAngle;
   refinement.coplanarToleranceDegrees = this->CoplanarTolerance;
-  refinement.sizeAt = field.size;
+  refinement.sizeAt = ptm::boundarySizeOf(field, input ? input->GetFieldData() : nullptr); // thickness-capped
   const bool refine = this->BoundaryRefinement && options.maximumVolume > 0;
   localError = meshOwnedSubdomains(this, piece, options, refine ? &refinement : nullptr, field, owned);
   if (run.FailedAnywhere(localError))

@@ -1,6 +1,7 @@
 #include "vtkVolumeBalancedCutter.h"
 
 #include "CADFaceIds.h"
+#include "LocalThickness.h"
 #include "PipelineRequests.h"
 #include "PolyDataConversion.h"
 #include "PropertyChecks.h"
@@ -402,6 +403,13 @@ int vtkVolumeBalancedCutter::RequestData(
   {
     ptm::addSizeSamples(fd, samples); // for the triangulator and the mesher (SizeField.h)
   }
+  if (this->SizeByThickness)
+  {
+    // every rank has the whole surface, so every rank measures the same samples
+    run.Step(0.9, "Measuring the thickness");
+    const double limit = this->MaximumSize > 0 ? this->MaximumSize : piece.inputMeanEdgeLength;
+    ptm::addThicknessSamples(fd, ptm::thicknessSamples(surface, limit), limit);
+  }
   return run.Done();
 }
 
@@ -417,6 +425,7 @@ void vtkVolumeBalancedCutter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PlaneTiltAngle: " << this->PlaneTiltAngle << "\n";
   os << indent << "CheckSelfIntersections: " << this->CheckSelfIntersections << "\n";
   os << indent << "RemoveFlatCrossings: " << this->RemoveFlatCrossings << "\n";
+  os << indent << "SizeByThickness: " << this->SizeByThickness << "\n";
   os << indent << "SelfIntersectionCheckLimit: " << this->SelfIntersectionCheckLimit << "\n";
   os << indent << "SizeExpression: " << this->SizeExpression << "\n";
   os << indent << "SizeArray: " << this->SizeArray << "\n";

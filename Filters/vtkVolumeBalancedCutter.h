@@ -164,6 +164,18 @@ public:
   ///@}
 
   ///@{
+  /// Measure the input's local thickness (LocalThickness.h: a ray along each
+  /// triangle's inward normal) where it is under the size (MaximumSize, or
+  /// the input's mean edge), and put the samples in the complex's field data
+  /// (ThicknessSamples), so the contour split, the interface triangulation
+  /// and the mesher's boundary refinement make edges no longer than a wall
+  /// is thick. On (default); off: the size alone sets them.
+  vtkSetMacro(SizeByThickness, vtkTypeBool);
+  vtkGetMacro(SizeByThickness, vtkTypeBool);
+  vtkBooleanMacro(SizeByThickness, vtkTypeBool);
+  ///@}
+
+  ///@{
   /// The controller (default: the global one).
   void SetController(vtkMultiProcessController*);
   vtkGetObjectMacro(Controller, vtkMultiProcessController);
@@ -194,6 +206,7 @@ protected:
   std::string SizeExpression;
   std::string SizeArray;
   double MaximumSize = 0.0;
+  vtkTypeBool SizeByThickness = 1;
   vtkMultiProcessController* Controller = nullptr;
 
 private:

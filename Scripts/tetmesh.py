@@ -75,6 +75,9 @@ def parse_arguments(argv):
                    "failing on one), "
                    "cut again at most this many times, otherwise (keeping flat crossings, untilted planes, "
                    "planes not turned to earlier lines), with a warning; 0 fails at once (default 3)")
+    p.add_argument("--no-thickness-size", action="store_true",
+                   help="size the boundary by --size alone (default: edges no longer than the part is thick "
+                   "where a wall is thinner than the size, measured by rays along the inward normals)")
     p.add_argument("--no-boundary-refinement", action="store_true",
                    help="mesh the subdomain surfaces as they are (TetGen keeps every input sliver)")
     p.add_argument("--coplanar-tolerance", type=float, default=0.0,
@@ -324,7 +327,8 @@ def main(argv):
         BalanceCriterion=args.balance or (
             "PredictedCost" if args.size_expression or args.size_array else "Volume"),
         SizeExpression=args.size_expression, SizeArray=args.size_array, SizeSource=size_source,
-        MaximumSize=args.size, RemoveFlatCrossings=0 if args.keep_flat_crossings else 1))
+        MaximumSize=args.size, RemoveFlatCrossings=0 if args.keep_flat_crossings else 1,
+        SizeByThickness=0 if args.no_thickness_size else 1))
     # rank 0's copy of the surface the cutter took (every rank asked for the whole)
     meshed = surface.GetClientSideObject().GetOutputDataObject(0)
     wrap_report = remesh_report = None
