@@ -77,6 +77,9 @@ def parse_arguments(argv):
                    help="pass --coplanar-tolerance to tetmesh.py: the boundary refinement merges nearly coplanar "
                    "input triangles as TetGen -p does (0.1 degrees is TetGen's own merge angle); the volume may "
                    "then change (reported), so the 1e-9 volume goal applies to the default (exact) mode only")
+    p.add_argument("--no-thickness-size", action="store_true",
+                   help="pass --no-thickness-size to tetmesh.py: the boundary spaced by the size alone, as before "
+                   "session 21 (for comparisons with the thickness cap)")
     p.add_argument("--remesh", action="store_true",
                    help="pass --remesh to tetmesh.py: the surface is remeshed at the run's size first (CGAL isotropic "
                    "remeshing, sharp edges kept); it moves the surface, so the volume goal does not apply")
@@ -174,6 +177,8 @@ def pipeline_run(surface, name, k, strategy, size, stats, args, plugin):
         command += ["--relax-iterations", str(args.relax_iterations)]
     if args.coplanar_tolerance is not None:
         command += ["--coplanar-tolerance", "%g" % args.coplanar_tolerance]
+    if args.no_thickness_size:
+        command += ["--no-thickness-size"]
     if args.remesh:
         command += ["--remesh"]
     code, text, seconds = run_group(command, args.timeout, env=env)

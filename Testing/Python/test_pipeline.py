@@ -36,9 +36,14 @@ FINE_INTERFACES = {("bracket.stl", 7, "RecursiveBisection"), ("torus.stl", 4, "P
 # part1, where splitting the contours made a subdomain cross itself, so
 # the triangulator checks the subdomains and undoes the splits on the
 # crossing ones' regions (ContourSubdivisionRetries); the
-# rank-independence comparison covers that retry
-SIZED = {("regression/netgen_part1.off", 16, "RecursiveBisection"): 0.2607}
+# rank-independence comparison covers that retry; and Cura's printer bed,
+# whose base is thinner than the size, so the comparison covers the
+# thickness samples (the cutter's SizeByThickness) and the points every
+# later stage places by them
+SIZED = {("regression/netgen_part1.off", 16, "RecursiveBisection"): 0.2607,
+         ("regression/cura_biqu_sss.off", 4, "ParallelPlanes"): 21.81}
 CASES.append(("regression/netgen_part1.off", 16, "RecursiveBisection", "Inertia", "KeepSurface"))
+CASES.append(("regression/cura_biqu_sss.off", 4, "ParallelPlanes", "LongestExtent", "KeepSurface"))
 SMOOTH_DEVIATION = 0.01  # MaximumSurfaceDeviation of the SmoothSurface cases (the default)
 
 
