@@ -26,6 +26,17 @@ namespace
 {
 /// @name Rays inward
 /// @{
+// A wall's far side faces back: its outward normal within this angle of
+// the ray. Hits on a surface that meets the ray more obliquely are the
+// other side of a wedge (a sharp edge), not of a wall, and give no sample.
+// Measured at K = 16 (2 ranks, the sweep's sizes): counting every hit (90
+// degrees) took CGAL's coarse triple torus, whose arms are prisms thinner
+// than the size, from 84,064 to 515,643 tetrahedra (0.17 -> 0.36 % under
+// 10 degrees; serial TetGen -pq: 79,053, 0.44 %) and OpenSCAD's
+// example001 from 136,482 to 316,087; 45 degrees still gave the torus
+// 518,137. With 30 both stay as they were and the printer bed keeps its
+// gain (Cura's BIQU_SSS: 2.19 % under 10 degrees, 275,307 tetrahedra).
+constexpr double kFacingAngle = 30.0;
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using CgalTriangle = Kernel::Triangle_3;
@@ -75,10 +86,13 @@ void rayOrigins(Vec3 a, Vec3 b, Vec3 c, double spacing, std::vector<Vec3>& origi
   }
 }
 
-// The distance from `origin` along `direction` (unit) to the first triangle
-// other than `self` within `limit`; +inf if there is none. A segment of that
-// length, not a ray: the tree then opens only the boxes near it (an unbounded
-// ray cost 330 us each on OCCT's Bottom, 31,000 long thin triangles).
+// The distance from `origin` along `direction` (unit, the inward normal of
+// triangle `self`) to the first other triangle within `limit`, if that
+// triangle faces back (its outward normal within kFacingAngle of
+// -direction: the far side of a wall); +inf otherwise. A segment of that
+// length, not a ray: the tree then opens only the boxes near it (an
+// unbounded ray cost 330 us each on OCCT's Bottom, 31,000 long thin
+// triangles).
 double firstHit(const Tree& tree, const std::vector<CgalTriangle>& triangles, std::size_t self,
   const Vec3& origin, const Vec3& direction, double limit)
 {
@@ -87,25 +101,34 @@ double firstHit(const Tree& tree, const std::vector<CgalTriangle>& triangles, st
   const Kernel::Segment_3 query(o, Point(end[0], end[1], end[2]));
   const TriangleIterator mine = triangles.begin() + static_cast<std::ptrdiff_t>(self);
   double nearest = std::numeric_limits<double>::infinity();
+  TriangleIterator nearestId = mine;
   std::vector<Tree::Intersection_and_primitive_id<Kernel::Segment_3>::Type> hits;
   tree.all_intersections(query, std::back_inserter(hits));
   for (const auto& [where, id] : hits)
   {
-    if (id == mine)
-    {
-      continue;
-    }
+    double d = std::numeric_limits<double>::infinity();
     if (const Point* p = boost::get<Point>(&where))
     {
-      nearest = std::min(nearest, std::sqrt(CGAL::squared_distance(o, *p)));
+      d = std::sqrt(CGAL::squared_distance(o, *p));
     }
     else if (const Kernel::Segment_3* s = boost::get<Kernel::Segment_3>(&where))
     {
-      nearest = std::min(nearest,
-        std::sqrt(std::min(CGAL::squared_distance(o, s->source()), CGAL::squared_distance(o, s->target()))));
+      d = std::sqrt(std::min(CGAL::squared_distance(o, s->source()), CGAL::squared_distance(o, s->target())));
+    }
+    if (id != mine && (d < nearest || (d == nearest && id < nearestId)))
+    {
+      nearest = d;
+      nearestId = id;
     }
   }
-  return nearest;
+  if (nearestId == mine)
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+  const Kernel::Vector_3 n = CGAL::normal(nearestId->vertex(0), nearestId->vertex(1), nearestId->vertex(2));
+  const double length = std::sqrt(n.squared_length());
+  const double facing = (n.x() * direction[0] + n.y() * direction[1] + n.z() * direction[2]) / length;
+  return length > 0 && facing >= std::cos(kFacingAngle * kPi / 180.0) ? nearest : std::numeric_limits<double>::infinity();
 }
 /// @}
 

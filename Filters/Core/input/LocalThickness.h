@@ -18,8 +18,10 @@
 //  and, where one finds the wall thinner, again about that thickness apart
 //  (never under kThicknessFloor of `limit`). Each ray's sample is the
 //  distance to the first other triangle it meets (CGAL's AABB tree, exact
-//  predicates). Samples thicker than `limit`, rays that meet nothing within
-//  it and hits nearer than 1e-9 of the bounding-box diagonal are left out.
+//  predicates), if that triangle faces back within 30 degrees (the far side
+//  of a wall, not the other side of a sharp edge). Samples thicker than
+//  `limit`, rays that meet nothing within it or an oblique triangle first,
+//  and hits nearer than 1e-9 of the bounding-box diagonal are left out.
 //  x, y, z, thickness per sample, in triangle order: the same surface gives
 //  the same samples on every rank. The surface must be closed and outward
 //  (the cutter's input after its checks).
