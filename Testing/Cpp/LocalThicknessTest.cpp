@@ -57,19 +57,17 @@ TEST(LocalThickness, TheCapIsTheThicknessAtTheWallAndGrowsAway)
   EXPECT_DOUBLE_EQ(unset({ 5, 4, 0.5 }), onFace);
 }
 
-TEST(LocalThickness, TheCapNeverFallsUnderItsFloor)
+TEST(LocalThickness, AWallThinnerThanTheFloorGivesNoSample)
 {
-  const double limit = 100.0; // the plate is 0.5 thick, under 100 / 64
+  const double limit = 100.0; // the plate is 0.5 thick, under the floor 100 / 64
   const std::vector<double> xyzt = thicknessSamples(plate(), limit);
-  ASSERT_GE(xyzt.size(), 4u);
-  const SizeFunction size = thicknessCappedSize({}, xyzt, limit);
-  std::size_t thinnest = 0;
-  for (std::size_t i = 4; i < xyzt.size(); i += 4)
+  ASSERT_FALSE(xyzt.empty()); // rays from the sides cross 8 or 10
+  for (std::size_t i = 3; i < xyzt.size(); i += 4)
   {
-    thinnest = xyzt[i + 3] < xyzt[thinnest + 3] ? i : thinnest;
+    EXPECT_GE(xyzt[i], kThicknessFloor * limit);
   }
-  EXPECT_NEAR(xyzt[thinnest + 3], 0.5, 1e-12);
-  EXPECT_DOUBLE_EQ(size({ xyzt[thinnest], xyzt[thinnest + 1], xyzt[thinnest + 2] }), kThicknessFloor * limit);
+  const SizeFunction size = thicknessCappedSize({}, xyzt, limit);
+  EXPECT_GE(size({ 5, 4, 0.5 }), kThicknessFloor * limit);
 }
 
 TEST(LocalThickness, TheSameSurfaceGivesTheSameSamples)

@@ -150,7 +150,6 @@ class ThicknessField
 public:
   ThicknessField(const std::vector<double>& xyzt, double limit)
     : Limit(limit)
-    , Floor(kThicknessFloor * limit)
   {
     const std::size_t n = xyzt.size() / 4;
     this->Points.reserve(n);
@@ -181,12 +180,11 @@ public:
       }
       best = std::min(best, this->Thickness[it->first] + kThicknessGradation * d);
     }
-    return std::max(best, this->Floor);
+    return best; // never under the floor: no sample is thinner
   }
 
 private:
   double Limit;
-  double Floor;
   double Thinnest = std::numeric_limits<double>::infinity();
   std::vector<SearchPoint> Points;
   std::vector<double> Thickness;
@@ -211,7 +209,13 @@ std::vector<double> thicknessSamples(const TriangleSurface& s, double limit)
     triangles.emplace_back(Point(a[0], a[1], a[2]), Point(b[0], b[1], b[2]), Point(c[0], c[1], c[2]));
   }
   Tree tree(triangles.begin(), triangles.end());
-  const double nearest = 1e-9 * boundingBoxDiagonal(s.points);
+  // A wall thinner than the cap's floor cannot be followed anyway, and
+  // capping at the floor around it only packs tiny triangles beside coarse
+  // ones: CGAL's double torus, whose surface nearly touches itself at one
+  // place (207 samples under 1e-3 of the size), went from 0.70 to 3.72 % of
+  // its tetrahedra under 10 degrees at K = 16 with those samples, 0.70 %
+  // without; Cura's bed, 2.18 and 2.21 %.
+  const double thinnestCounted = std::max(1e-9 * boundingBoxDiagonal(s.points), kThicknessFloor * limit);
   std::vector<Vec3> origins;
   for (std::size_t t = 0; t < s.triangles.size(); ++t)
   {
@@ -231,18 +235,17 @@ std::vector<double> thicknessSamples(const TriangleSurface& s, double limit)
       for (const Vec3& o : origins)
       {
         const double d = firstHit(tree, triangles, t, o, inward, limit);
-        if (d > nearest && d < limit)
+        if (d >= thinnestCounted && d < limit)
         {
           xyzt.insert(xyzt.end(), { o[0], o[1], o[2], d });
           thinnest = std::min(thinnest, d);
         }
       }
-      const double finer = std::max(thinnest, kThicknessFloor * limit);
-      if (!(finer < 0.5 * spacing))
+      if (!(thinnest < 0.5 * spacing)) // thinnest is at least the floor
       {
         break;
       }
-      spacing = finer;
+      spacing = thinnest;
     }
   }
   return xyzt;

@@ -20,8 +20,9 @@
 //  distance to the first other triangle it meets (CGAL's AABB tree, exact
 //  predicates), if that triangle faces back within 30 degrees (the far side
 //  of a wall, not the other side of a sharp edge). Samples thicker than
-//  `limit`, rays that meet nothing within it or an oblique triangle first,
-//  and hits nearer than 1e-9 of the bounding-box diagonal are left out.
+//  `limit` or thinner than kThicknessFloor of it (a place where the surface
+//  nearly touches itself), and rays that meet nothing within it or an
+//  oblique triangle first, are left out.
 //  x, y, z, thickness per sample, in triangle order: the same surface gives
 //  the same samples on every rank. The surface must be closed and outward
 //  (the cutter's input after its checks).
@@ -39,8 +40,9 @@ namespace ptm
 // How fast the cap grows away from a thin place: size t at the wall, t +
 // 0.5 d at distance d.
 constexpr double kThicknessGradation = 0.5;
-// The cap never asks for less than this fraction of the largest size, so a
-// sliver gap in a CAD export does not split edges into thousands of parts.
+// Walls thinner than this fraction of the largest size give no sample, so
+// the cap never asks for less and a sliver gap in a CAD export does not
+// split edges into thousands of parts.
 constexpr double kThicknessFloor = 1.0 / 64.0;
 
 std::vector<double> thicknessSamples(const TriangleSurface& surface, double limit);
