@@ -162,3 +162,16 @@ if __name__ == "__main__":
     import surface_tool
 
     print(json.dumps(check(sys.argv[1], surface_tool.stats(sys.argv[2]))))
+
+
+def check_summary_mesh(summary_json, surface_stats, largest_volume_error=1e-9):
+    """The check of the .pvtu beside a tetmesh.py --json summary, and what a
+    regression test counts as failures: not conforming, or the volume off by
+    more than largest_volume_error (relative)."""
+    result = check(os.path.splitext(summary_json)[0] + ".pvtu", surface_stats)
+    failures = []
+    if not result["conforming"]:
+        failures.append("the mesh does not conform: %s" % result["problems"])
+    if result.get("volume_error", 1) > largest_volume_error:
+        failures.append("volume error %.3g" % result.get("volume_error", 1))
+    return result, failures

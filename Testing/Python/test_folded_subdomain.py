@@ -32,12 +32,8 @@ def main(summary_json, surface):
     recuts = summary.get("recuts") or []
     if recuts:
         failures.append("the run was cut again: %s" % recuts)
-    pvtu = os.path.splitext(summary_json)[0] + ".pvtu"
-    check = conformity.check(pvtu, surface_tool.stats(surface))
-    if not check["conforming"]:
-        failures.append("the mesh does not conform: %s" % check["problems"])
-    if check.get("volume_error", 1) > 1e-9:
-        failures.append("volume error %.3g" % check.get("volume_error", 1))
+    check, mesh_failures = conformity.check_summary_mesh(summary_json, surface_tool.stats(surface))
+    failures += mesh_failures
     print("folded subdomain: %d recuts, %d tetrahedra, conforming %s, volume error %.2g" % (
         len(recuts), summary["tetrahedra"], check["conforming"], check.get("volume_error", -1)))
     for failure in failures:

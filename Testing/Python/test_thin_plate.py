@@ -32,13 +32,9 @@ def main(summary_json, surface):
     with open(summary_json) as f:
         summary = json.load(f)
     failures = []
-    pvtu = os.path.splitext(summary_json)[0] + ".pvtu"
-    check = conformity.check(pvtu, surface_tool.stats(surface))
-    if not check["conforming"]:
-        failures.append("the mesh does not conform: %s" % check["problems"])
-    if check.get("volume_error", 1) > 1e-9:
-        failures.append("volume error %.3g" % check.get("volume_error", 1))
-    quality = mesh_quality.mesh_quality(pvtu)
+    check, mesh_failures = conformity.check_summary_mesh(summary_json, surface_tool.stats(surface))
+    failures += mesh_failures
+    quality = mesh_quality.mesh_quality(os.path.splitext(summary_json)[0] + ".pvtu")
     share = quality["share_below_10_degrees"]
     if share > LARGEST_SHARE_UNDER_10_DEGREES:
         failures.append("%.2f %% of the tetrahedra are under 10 degrees (at most %.0f %% expected)" % (
