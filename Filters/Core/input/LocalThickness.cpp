@@ -14,11 +14,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <iterator>
 #include <limits>
 #include <memory>
-#include <numeric>
 
 namespace ptm
 {
@@ -88,8 +86,8 @@ void rayOrigins(Vec3 a, Vec3 b, Vec3 c, double spacing, std::vector<Vec3>& origi
 
 // The distance from `origin` along `direction` (unit, the inward normal of
 // triangle `self`) to the first other triangle within `limit`, if that
-// triangle faces back (its outward normal within kFacingAngle of
-// -direction: the far side of a wall); +inf otherwise. A segment of that
+// triangle faces back (its outward normal within kFacingAngle of the ray's
+// direction: the far side of a wall); +inf otherwise. A segment of that
 // length, not a ray: the tree then opens only the boxes near it (an
 // unbounded ray cost 330 us each on OCCT's Bottom, 31,000 long thin
 // triangles).
