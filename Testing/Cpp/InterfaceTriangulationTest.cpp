@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -226,6 +227,37 @@ TEST(InterfaceTriangulation, SizeFieldCrossingZeroInsideStaysBounded)
   const auto result = triangulateInterface(r, options);
   EXPECT_NEAR(check(r, result, 20.7), 1.0, 1e-12);
   EXPECT_LT(result.triangulation.newPoints.size(), 200000u); // 26,046 measured
+}
+
+// Where a size field has no value (+inf: the thickness cap away from every
+// thin wall) a vertex is sized as with no field at all: by the maximum
+// edge length when there is one, else automatically with its 1.3 x slack.
+// Falling back to the automatic size under a maximum edge length made the
+// whole square as fine as its boundary spacing (0.02, not 0.1).
+TEST(InterfaceTriangulation, SizeFieldWithoutValueSizesAsNoField)
+{
+  PlanarRegion r = plane();
+  addLoop(r, square(0, 0, 1, 50, true));
+  const double none = std::numeric_limits<double>::infinity();
+  InterfaceTriangulationOptions plain;
+  plain.maximumEdgeLength = 0.1;
+  InterfaceTriangulationOptions capped = plain;
+  capped.sizeAt = [&](const Vec3&) { return none; };
+  const auto a = triangulateInterface(r, plain);
+  const auto b = triangulateInterface(r, capped);
+  ASSERT_TRUE(a.ok && b.ok);
+  EXPECT_EQ(a.triangulation.newPoints, b.triangulation.newPoints);
+  EXPECT_EQ(a.triangulation.triangles, b.triangulation.triangles);
+
+  InterfaceTriangulationOptions automatic, automaticCapped;
+  automaticCapped.sizeAt = [&](const Vec3&) { return none; };
+  const auto c = triangulateInterface(r, automatic);
+  const auto d = triangulateInterface(r, automaticCapped);
+  ASSERT_TRUE(c.ok && d.ok);
+  EXPECT_EQ(c.triangulation.newPoints, d.triangulation.newPoints);
+  EXPECT_EQ(c.triangulation.triangles, d.triangulation.triangles);
+  // the maximum edge length coarsens the inside: fewer points than automatic
+  EXPECT_LT(2 * a.triangulation.newPoints.size(), c.triangulation.newPoints.size());
 }
 
 TEST(InterfaceTriangulation, HolesComponentsAndLShape)
