@@ -1,12 +1,8 @@
 #include "SampledSize.h"
 
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/property_map.h>
+#include "PointSamples.h"
 
-#include <boost/iterator/counting_iterator.hpp>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
 
 #include <cmath>
 #include <memory>
@@ -20,40 +16,25 @@ namespace
 // field is smooth between surface samples, few enough to stay local.
 constexpr unsigned kNeighbours = 8;
 
-using Kernel = CGAL::Simple_cartesian<double>;
-using Point = Kernel::Point_3;
-// the tree holds sample indices; the points live in a vector beside it
-using PointMap = CGAL::Pointer_property_map<Point>::type;
-using Traits = CGAL::Search_traits_adapter<std::size_t, PointMap, CGAL::Search_traits_3<Kernel>>;
-using Search = CGAL::Orthogonal_k_neighbor_search<Traits>;
-using Tree = Search::Tree;
-using Distance = Search::Distance;
+using Search = CGAL::Orthogonal_k_neighbor_search<PointSamples::Traits>;
 
-struct Samples
+double interpolatedAt(const PointSamples& samples, const Vec3& p)
 {
-  std::vector<Point> points;
-  std::vector<double> sizes;
-  PointMap map; // into `points`, made once they are all in
-  std::unique_ptr<Tree> tree;
-
-  double at(const Vec3& p) const
+  const PointSamples::Point q(p[0], p[1], p[2]);
+  const Search search(samples.tree(), q, kNeighbours, 0, true, Search::Distance(samples.map()));
+  double weighted = 0.0;
+  double total = 0.0;
+  for (const auto& [index, d2] : search)
   {
-    const Point q(p[0], p[1], p[2]);
-    const Search search(*this->tree, q, kNeighbours, 0, true, Distance(this->map));
-    double weighted = 0.0;
-    double total = 0.0;
-    for (const auto& [index, d2] : search)
+    if (d2 == 0.0)
     {
-      if (d2 == 0.0)
-      {
-        return this->sizes[index];
-      }
-      weighted += this->sizes[index] / d2;
-      total += 1.0 / d2;
+      return samples.value(index);
     }
-    return weighted / total;
+    weighted += samples.value(index) / d2;
+    total += 1.0 / d2;
   }
-};
+  return weighted / total;
+}
 } // namespace
 
 SizeFunction sampledSize(const std::vector<double>& xyzh, const std::string& name, std::string& error)
@@ -65,9 +46,6 @@ SizeFunction sampledSize(const std::vector<double>& xyzh, const std::string& nam
     error = name + " has no values (the size source has no points)";
     return {};
   }
-  auto samples = std::make_shared<Samples>();
-  samples->points.reserve(n);
-  samples->sizes.reserve(n);
   for (std::size_t i = 0; i < n; ++i)
   {
     const double* s = &xyzh[4 * i];
@@ -80,13 +58,8 @@ SizeFunction sampledSize(const std::vector<double>& xyzh, const std::string& nam
       error = msg.str();
       return {};
     }
-    samples->points.emplace_back(s[0], s[1], s[2]);
-    samples->sizes.push_back(s[3]);
   }
-  samples->map = CGAL::make_property_map(samples->points);
-  samples->tree = std::make_unique<Tree>(boost::counting_iterator<std::size_t>(0),
-    boost::counting_iterator<std::size_t>(n), Tree::Splitter(), Traits(samples->map));
-  samples->tree->build();
-  return [samples](const Vec3& p) { return samples->at(p); };
+  auto samples = std::make_shared<const PointSamples>(xyzh);
+  return [samples](const Vec3& p) { return interpolatedAt(*samples, p); };
 }
 } // namespace ptm

@@ -1,16 +1,12 @@
 #include "LocalThickness.h"
 
+#include "PointSamples.h"
+
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Orthogonal_incremental_neighbor_search.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/property_map.h>
-
-#include <boost/iterator/counting_iterator.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -35,6 +31,7 @@ namespace
 // 518,137. With 30 both stay as they were and the printer bed keeps its
 // gain (Cura's BIQU_SSS: 2.19 % under 10 degrees, 275,307 tetrahedra).
 constexpr double kFacingAngle = 30.0;
+const double kFacingCosine = std::cos(kFacingAngle * kPi / 180.0);
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using CgalTriangle = Kernel::Triangle_3;
@@ -126,18 +123,13 @@ double firstHit(const Tree& tree, const std::vector<CgalTriangle>& triangles, st
   const Kernel::Vector_3 n = CGAL::normal(nearestId->vertex(0), nearestId->vertex(1), nearestId->vertex(2));
   const double length = std::sqrt(n.squared_length());
   const double facing = (n.x() * direction[0] + n.y() * direction[1] + n.z() * direction[2]) / length;
-  return length > 0 && facing >= std::cos(kFacingAngle * kPi / 180.0) ? nearest : std::numeric_limits<double>::infinity();
+  return length > 0 && facing >= kFacingCosine ? nearest : std::numeric_limits<double>::infinity();
 }
 /// @}
 
 /// @name The capped field
 /// @{
-using SearchKernel = CGAL::Simple_cartesian<double>;
-using SearchPoint = SearchKernel::Point_3;
-// the tree holds sample indices; the points live in a vector beside it
-using PointMap = CGAL::Pointer_property_map<SearchPoint>::type;
-using Traits = CGAL::Search_traits_adapter<std::size_t, PointMap, CGAL::Search_traits_3<SearchKernel>>;
-using Search = CGAL::Orthogonal_incremental_neighbor_search<Traits>;
+using Search = CGAL::Orthogonal_incremental_neighbor_search<PointSamples::Traits>;
 
 // The samples in a k-d tree, visited nearest first until no farther one can
 // give less: a sample at distance d gives at least thinnest + g d. A grid
@@ -148,27 +140,20 @@ class ThicknessField
 public:
   ThicknessField(const std::vector<double>& xyzt, double limit)
     : Limit(limit)
+    , Samples(xyzt)
   {
-    const std::size_t n = xyzt.size() / 4;
-    this->Points.reserve(n);
-    this->Thickness.reserve(n);
-    for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t i = 0; i < this->Samples.size(); ++i)
     {
-      this->Points.emplace_back(xyzt[4 * i], xyzt[4 * i + 1], xyzt[4 * i + 2]);
-      this->Thickness.push_back(xyzt[4 * i + 3]);
-      this->Thinnest = std::min(this->Thinnest, xyzt[4 * i + 3]);
+      this->Thinnest = std::min(this->Thinnest, this->Samples.value(i));
     }
-    this->Map = CGAL::make_property_map(this->Points);
-    this->Tree = std::make_unique<Search::Tree>(boost::counting_iterator<std::size_t>(0),
-      boost::counting_iterator<std::size_t>(n), Search::Tree::Splitter(), Traits(this->Map));
-    this->Tree->build(); // not lazily inside a query
   }
 
   // +inf where no sample counts
   double At(const Vec3& p) const
   {
     double best = std::numeric_limits<double>::infinity();
-    const Search search(*this->Tree, SearchPoint(p[0], p[1], p[2]), 0.0, true, Search::Distance(this->Map));
+    const Search search(this->Samples.tree(), PointSamples::Point(p[0], p[1], p[2]), 0.0, true,
+      Search::Distance(this->Samples.map()));
     for (auto it = search.begin(); it != search.end(); ++it)
     {
       const double d = std::sqrt(it->second);
@@ -176,7 +161,7 @@ public:
       {
         break;
       }
-      best = std::min(best, this->Thickness[it->first] + kThicknessGradation * d);
+      best = std::min(best, this->Samples.value(it->first) + kThicknessGradation * d);
     }
     return best; // never under the floor: no sample is thinner
   }
@@ -184,10 +169,7 @@ public:
 private:
   double Limit;
   double Thinnest = std::numeric_limits<double>::infinity();
-  std::vector<SearchPoint> Points;
-  std::vector<double> Thickness;
-  PointMap Map;
-  std::unique_ptr<Search::Tree> Tree;
+  PointSamples Samples;
 };
 /// @}
 } // namespace
