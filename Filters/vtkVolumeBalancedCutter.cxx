@@ -222,6 +222,27 @@ void addCutterFacts(vtkFieldData* fd, const ptm::DecompositionResult& result, co
   }
   fd->AddArray(repairs);
 }
+// This rank's block of the thickness rays: every rank has the whole
+// surface, and rank r casts the rays of triangles n r / P .. n (r + 1) / P,
+// so the blocks gathered in rank order are the samples of one serial call
+// (LocalThickness.h), whatever the rank count. Prusa's aq_bed (15,676
+// triangles, 2.3 M samples) cast its rays in 4.2 s on every rank before.
+std::string rayBlockSamples(vtkMultiProcessController* controller, const ptm::TriangleSurface& surface,
+  double limit, std::vector<double>& samples)
+{
+  const std::size_t n = surface.triangles.size();
+  const std::size_t rank = static_cast<std::size_t>(ptm::rankOf(controller));
+  const std::size_t ranks = static_cast<std::size_t>(ptm::rankCount(controller));
+  try
+  {
+    samples = ptm::thicknessSamples(surface, limit, n * rank / ranks, n * (rank + 1) / ranks);
+  }
+  catch (const std::exception& e)
+  {
+    return std::string("unexpected failure while measuring the thickness: ") + e.what();
+  }
+  return {};
+}
 } // namespace
 
 vtkStandardNewMacro(vtkVolumeBalancedCutter);
@@ -405,10 +426,15 @@ int vtkVolumeBalancedCutter::RequestData(
   }
   if (this->SizeByThickness)
   {
-    // every rank has the whole surface, so every rank measures the same samples
     run.Step(0.9, "Measuring the thickness");
     const double limit = this->MaximumSize > 0 ? this->MaximumSize : piece.inputMeanEdgeLength;
-    ptm::addThicknessSamples(fd, ptm::thicknessSamples(surface, limit), limit);
+    std::vector<double> mine;
+    localError = rayBlockSamples(controller, surface, limit, mine);
+    if (run.FailedAnywhere(localError))
+    {
+      return run.Failure();
+    }
+    ptm::addThicknessSamples(fd, ptm::rankCount(controller) > 1 ? ptm::allGatherValues(controller, mine) : mine, limit);
   }
   return run.Done();
 }

@@ -74,3 +74,24 @@ TEST(LocalThickness, TheSameSurfaceGivesTheSameSamples)
 {
   EXPECT_EQ(thicknessSamples(plate(), 2.0), thicknessSamples(plate(), 2.0));
 }
+
+// The cutter's ranks each measure a block of triangles and concatenate the
+// blocks in rank order: that must be the samples of one call over all.
+TEST(LocalThickness, BlocksOfTrianglesConcatenateToTheWhole)
+{
+  const TriangleSurface s = subdividedBox({ 0, 0, 0 }, { 10, 8, 0.5 }, 3);
+  const std::vector<double> whole = thicknessSamples(s, 2.0);
+  ASSERT_FALSE(whole.empty());
+  for (std::size_t blocks : { 2u, 3u, 7u })
+  {
+    std::vector<double> joined;
+    for (std::size_t b = 0; b < blocks; ++b)
+    {
+      const std::vector<double> part =
+        thicknessSamples(s, 2.0, s.triangles.size() * b / blocks, s.triangles.size() * (b + 1) / blocks);
+      joined.insert(joined.end(), part.begin(), part.end());
+    }
+    EXPECT_EQ(joined, whole) << blocks << " blocks";
+  }
+  EXPECT_TRUE(thicknessSamples(s, 2.0, 5, 5).empty());
+}

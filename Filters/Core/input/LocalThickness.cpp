@@ -174,7 +174,7 @@ private:
 /// @}
 } // namespace
 
-std::vector<double> thicknessSamples(const TriangleSurface& s, double limit)
+std::vector<double> thicknessSamples(const TriangleSurface& s, double limit, std::size_t first, std::size_t end)
 {
   std::vector<double> xyzt;
   if (!(limit > 0) || s.triangles.empty())
@@ -197,7 +197,7 @@ std::vector<double> thicknessSamples(const TriangleSurface& s, double limit)
   // without; Cura's bed, 2.18 and 2.21 %.
   const double thinnestCounted = std::max(1e-9 * boundingBoxDiagonal(s.points), kThicknessFloor * limit);
   std::vector<Vec3> origins;
-  for (std::size_t t = 0; t < s.triangles.size(); ++t)
+  for (std::size_t t = first; t < std::min(end, s.triangles.size()); ++t)
   {
     const Vec3 &a = s.points[s.triangles[t][0]], &b = s.points[s.triangles[t][1]], &c = s.points[s.triangles[t][2]];
     const Vec3 inward = -1.0 * normalized(cross(b - a, c - a));

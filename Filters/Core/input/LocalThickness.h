@@ -24,8 +24,11 @@
 //  nearly touches itself), and rays that meet nothing within it or an
 //  oblique triangle first, are left out.
 //  x, y, z, thickness per sample, in triangle order: the same surface gives
-//  the same samples on every rank. The surface must be closed and outward
-//  (the cutter's input after its checks).
+//  the same samples on every rank. Only triangles first .. end - 1 cast
+//  rays (all of them by default), against the whole surface, so blocks of
+//  triangles measured by different ranks and concatenated in order give
+//  the samples of one call over all of them. The surface must be closed and
+//  outward (the cutter's input after its checks).
 //  thicknessCappedSize: the size at p is the smaller of `base` (none: no cap
 //  from it) and min over samples s of (t_s + kThicknessGradation |p - s|),
 //  never under kThicknessFloor of `limit`; +inf (no cap) where no sample
@@ -33,6 +36,7 @@
 #include "SizeFunction.h"
 #include "TriangleSurface.h"
 
+#include <cstddef>
 #include <vector>
 
 namespace ptm
@@ -45,7 +49,8 @@ constexpr double kThicknessGradation = 0.5;
 // split edges into thousands of parts.
 constexpr double kThicknessFloor = 1.0 / 64.0;
 
-std::vector<double> thicknessSamples(const TriangleSurface& surface, double limit);
+std::vector<double> thicknessSamples(const TriangleSurface& surface, double limit, std::size_t first = 0,
+  std::size_t end = static_cast<std::size_t>(-1));
 
 SizeFunction thicknessCappedSize(const SizeFunction& base, const std::vector<double>& xyzt, double limit);
 } // namespace ptm
