@@ -50,6 +50,33 @@ TEST(PredictedCost, ConstantSizeGivesVolumeAndAreaOverTheElements)
   EXPECT_NEAR(sum / (2.0 * 6 * std::sqrt(2.0) / 1e-3), 1.0, 1e-9);
 }
 
+// One size, the model of real parts: 2.9 x the regular tetrahedra plus 4.3
+// per piece of the input surface. The four slabs have the same volume; the
+// two end slabs also hold an end face of the box (72 more pieces), so they
+// are predicted to cost more, where the volume alone shares them out alike.
+TEST(PredictedCost, UniformCostCountsThePiecesOfTheInput)
+{
+  const SurfaceComplex c = boxInFour(CutStrategy::ParallelPlanes);
+  const PredictedCost cost = predictUniformCost(c, 0.1);
+  ASSERT_EQ(cost.tetrahedra.size(), 4u);
+  std::vector<double> pieces(4, 0.0);
+  for (std::size_t i = 0; i < c.triangles.size(); ++i)
+  {
+    if (c.trianglePairs[i][1] < 0)
+    {
+      pieces[c.trianglePairs[i][0]] += 1;
+    }
+  }
+  for (int s = 0; s < 4; ++s)
+  {
+    EXPECT_EQ(cost.inputPieces[s], pieces[s]) << s;
+    EXPECT_NEAR(cost.tetrahedra[s], 2.9 * cost.regularTetrahedra[s] + 4.3 * pieces[s], 1e-6) << s;
+  }
+  EXPECT_NEAR(pieces[0] - pieces[1], 72.0, 0.5);
+  EXPECT_GT(cost.tetrahedra[0], cost.tetrahedra[1] + 4.3 * 70);
+  EXPECT_NEAR(cost.tetrahedra[0], cost.tetrahedra[3], 1e-6);
+}
+
 // h = 0.05 + 0.1 x over the box [0, 2] x [0, 1]^2: the whole is
 // 6 sqrt(2) * 5 * (1 / 0.05^2 - 1 / 0.25^2) = 6 sqrt(2) * 1920, and the
 // subdomains at small x, where h is small, get far more.

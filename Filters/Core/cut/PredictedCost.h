@@ -1,8 +1,9 @@
 #ifndef PTM_PREDICTED_COST_H
 #define PTM_PREDICTED_COST_H
-// The meshing cost of every subdomain as a size field predicts it, so that
-// subdomains can go to ranks by cost rather than volume (a field ten times
-// finer at one pole put 1.30 x the mean tetrahedra on one of 2 ranks).
+// The meshing cost of every subdomain as a size field, or one size,
+// predicts it, so that subdomains go to ranks by cost rather than volume (a
+// field ten times finer at one pole put 1.30 x the mean tetrahedra on one
+// of 2 ranks; the fine thread of a screw at one size, 1.82 x).
 //
 // Contract.
 //  Input: a labeled complex whose subdomains are closed (surface triangles,
@@ -35,10 +36,17 @@ struct PredictedCost
 {
   std::vector<double> regularTetrahedra; // per subdomain
   std::vector<double> boundaryTriangles; // per subdomain
+  std::vector<double> inputPieces;       // per subdomain: pieces of input triangles on its boundary
   std::vector<double> tetrahedra;        // per subdomain: TetGen's expected count
 };
 
 PredictedCost predictCost(const SurfaceComplex& complex, const SizeFunction& size);
+
+// The same for one size h everywhere (no size field), with TetGen's count
+// from a model fitted on real CAD and scanned parts: the regular
+// tetrahedra and the pieces of the input surface, which the boundary keeps
+// however small they are against h (PredictedCost.cpp).
+PredictedCost predictUniformCost(const SurfaceComplex& complex, double h);
 
 // The field no larger than `cap` (the mesher's largest size: it never
 // meshes coarser); `size` itself when cap is not positive.
