@@ -40,8 +40,9 @@ namespace
 // field no larger than the mesher's largest size (`maximumSize`, or the
 // input's mean edge as the mesher's automatic MaximumVolume), or for that
 // size alone without a field (predictUniformCost, a model fitted on real
-// parts); a field must be positive at every point of the complex. Every rank has the whole complex, so every rank gets the
-// same costs, or the same error. Without a field the subdomains went by
+// parts); a field must be positive at every point of the complex. Every
+// rank has the whole complex, so every rank gets the same costs, or the
+// same error. Without a field the subdomains went by
 // volume until session 22: on 10 real surfaces at K = 16 on 2 ranks the
 // largest rank had 1.02-1.82 x the mean tetrahedra (1.26 on average).
 bool predictedCosts(const ptm::DecompositionResult& result, const ptm::SizeField& field,

@@ -163,13 +163,16 @@ PredictedCost predictUniformCost(const SurfaceComplex& c, double h)
   // triangles, which the boundary keeps however small, drive TetGen's
   // count; the field model above, fitted on a smooth ball, leaves them out
   // (its outer-surface terms: predicted / measured 0.23-1.09, median per
-  // surface; this model 0.42-1.20, Prusa's M3x10 screw 0.27 -> 1.20: the eight subdomains of
-  // its thread hold 1,466-2,429 input pieces each, those of the head
-  // 26-72). Adding the pieces to the field model instead, with or without
-  // its area term, shared the subdomains out worse than volume on OpenSCAD's
-  // CSG and FreeCAD's test_holes00 (2 ranks, 1.02 -> 1.12 and 1.24 -> 1.34);
-  // this model, fitted without the surface it was tried on, never did, at
-  // 2, 4 or 8 ranks.
+  // surface; this model 0.42-1.20, Prusa's M3x10 screw 0.27 -> 1.20: the
+  // eight subdomains of its thread hold 1,466-2,429 input pieces each,
+  // those of the head 26-72). Adding the pieces to the field model
+  // instead, with or without its area term, shared the subdomains out worse
+  // than volume on OpenSCAD's CSG and FreeCAD's test_holes00 (2 ranks, 1.02
+  // -> 1.12 and 1.24 -> 1.34); this model, fitted without the surface it
+  // was tried on, never did there, at 2, 4 or 8 ranks. On 14 surfaces
+  // outside the fit it changed 2-rank balances little (1.064 -> 1.066 mean
+  // by bisection), worse on 4 by up to 0.06 and better on Cura's nozzle
+  // (1.139 -> 1.011): Testing/Corpus/results/balance-k16-session22.md.
   for (int s = 0; s < c.subdomainCount; ++s)
   {
     cost.tetrahedra[s] = 2.9 * cost.regularTetrahedra[s] + 4.3 * cost.inputPieces[s];

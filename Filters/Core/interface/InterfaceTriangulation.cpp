@@ -465,10 +465,10 @@ void InterfaceMesher::setSize(Vertex v, double automatic) const
 {
   const Point& p = v->point();
   const double field = options.sizeAt ? options.sizeAt(region.origin + p.x() * e1 + p.y() * e2) : 0.0;
-  const double cap = options.maximumEdgeLength > 0 ? options.maximumEdgeLength : std::numeric_limits<double>::infinity();
   if (field > 0 && std::isfinite(field))
   {
-    v->info().size = std::min(std::max(kFieldAllowance * field, smallestField), cap);
+    const double wanted = std::max(kFieldAllowance * field, smallestField);
+    v->info().size = options.maximumEdgeLength > 0 ? std::min(wanted, options.maximumEdgeLength) : wanted;
     v->info().allowed = v->info().size;
   }
   else if (options.maximumEdgeLength > 0)
