@@ -353,7 +353,9 @@ MeshTotals gatherTotals(
   std::vector<long long> minimum{ -std::llround(totals.quality.minimumDihedralDegrees * 1e9) };
   ptm::allReduceMax(controller, minimum);
   totals.quality.below10Degrees = std::llround(below[0]);
-  totals.quality.minimumDihedralDegrees = -static_cast<double>(minimum[0]) * 1e-9;
+  // negated as an integer: a smallest angle under 5e-10 degrees rounds to 0,
+  // and negating the double gave -0, printed as "-0.00 degrees"
+  totals.quality.minimumDihedralDegrees = static_cast<double>(-minimum[0]) * 1e-9;
   totals.quality.tetrahedra = totals.offsets.tetrahedronCount;
   return totals;
 }
