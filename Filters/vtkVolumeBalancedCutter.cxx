@@ -444,7 +444,7 @@ int vtkVolumeBalancedCutter::RequestData(
     {
       return run.Failure();
     }
-    ptm::addThicknessSamples(fd, ptm::rankCount(controller) > 1 ? ptm::allGatherValues(controller, mine) : mine, limit);
+    ptm::addThicknessSamples(fd, ptm::allGatherValues(controller, mine), limit); // the blocks in rank order
   }
   return run.Done();
 }
