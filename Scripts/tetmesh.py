@@ -70,11 +70,11 @@ def parse_arguments(argv):
     p.add_argument("--keep-flat-crossings", action="store_true",
                    help="keep every contour point of the cuts, also those inside planar faces (default: they "
                    "are taken out, and the run is made again keeping them if TetGen fails)")
-    p.add_argument("--recut-attempts", type=int, default=3,
+    p.add_argument("--recut-attempts", type=int, default=4,
                    help="where a stage after the cut fails on a subdomain or an interface (one crossing itself, TetGen "
                    "failing on one), "
                    "cut again at most this many times, otherwise (keeping flat crossings, untilted planes, "
-                   "planes not turned to earlier lines), with a warning; 0 fails at once (default 3)")
+                   "planes not turned to earlier lines, no thickness size), with a warning; 0 fails at once (default 4)")
     p.add_argument("--no-thickness-size", action="store_true",
                    help="size the boundary by --size alone (default: edges no longer than the part is thick "
                    "where a wall is thinner than the size, measured by rays along the inward normals)")
@@ -208,29 +208,53 @@ def field_value(polydata, name):
     return float(array.GetValue(0)) if array is not None and array.GetNumberOfTuples() else None
 
 
-def recut_attempts(cutter, strategy):
+def recut_changes(strategy, tilt, alignment, removed, thin_walls):
     """The other cuts tried, in order, after a stage following the cut as
-    asked failed: keeping the contour points it took out of planar faces
-    (where it took some: TetGen may fail on the thin slabs that leaves and
-    mesh them with the crossings kept, OCCT's Top and Bottom at 32 parallel
-    planes); recursive bisection's planes untilted; and planes neither
-    tilted nor turned towards lines already drawn. Each is the cut as asked
-    with that change. The last two are for a subdomain a cut leaves crossing
-    itself where the cutter's own check does not see it: FreeCAD's
-    TCMT1107_4 at K = 16 by bisection was such a case until session 20 fixed
-    the check, and meshed with untilted planes."""
-    removed = field_value(cutter.GetClientSideObject().GetOutputDataObject(0), "FlatCrossingsRemoved")
+    asked failed, as (cutter settings changed, description); each is the
+    cut as asked with that change. `removed` is the number of contour points
+    the cut took out of planar faces, `thin_walls` whether the cutter
+    measured walls thinner than the size (SizeByThickness on, with samples).
+
+    1. Keeping the flat crossings (TetGen may fail on the thin slabs their
+       removal leaves and mesh them with the crossings kept: OCCT's Top and
+       Bottom at 32 parallel planes).
+    2. Recursive bisection's planes untilted, then 3. planes neither tilted
+       nor turned towards lines already drawn: for a subdomain a cut leaves
+       crossing itself where the cutter's own check does not see it
+       (FreeCAD's TCMT1107_4 at K = 16 by bisection was such a case until
+       session 20 fixed the check, and meshed with untilted planes).
+    4. The boundary sized by the size alone, the flat crossings kept:
+       Cura's BIQU_SSS bed at K = 64 with parallel planes crashed TetGen
+       (add_steinerpt_in_segment) on subdomain 35 or 7 in every order after
+       each cut above, stalled it on subdomain 32 without the thickness size
+       alone, and meshed with the crossings kept as well."""
     attempts = []
     if removed:
         attempts.append(({"RemoveFlatCrossings": 0},
                          "the cut had taken %d contour points out of planar faces: cutting again keeping them "
                          "(--keep-flat-crossings)" % removed))
-    if strategy == "RecursiveBisection" and cutter.PlaneTiltAngle != 0:
+    if strategy == "RecursiveBisection" and tilt != 0:
         attempts.append(({"PlaneTiltAngle": 0}, "cutting again with untilted planes"))
-    if cutter.PlaneAlignmentAngle != 0:
+    if alignment != 0:
         attempts.append(({"PlaneTiltAngle": 0, "PlaneAlignmentAngle": 0},
                          "cutting again with planes neither tilted nor turned towards earlier lines"))
+    if thin_walls:
+        change = {"SizeByThickness": 0}
+        if removed:
+            change["RemoveFlatCrossings"] = 0
+        attempts.append((change, "cutting again without sizing the boundary by the wall thickness "
+                         "(--no-thickness-size%s): walls thinner than the size get coarser tetrahedra across them"
+                         % (", --keep-flat-crossings" if removed else "")))
     return attempts
+
+
+def recut_attempts(cutter, strategy):
+    """recut_changes for the cut the cutter proxy made."""
+    cut = cutter.GetClientSideObject().GetOutputDataObject(0)
+    samples = cut.GetFieldData().GetArray("ThicknessSamples")
+    thin_walls = bool(cutter.SizeByThickness) and samples is not None and samples.GetNumberOfTuples() > 0
+    return recut_changes(strategy, cutter.PlaneTiltAngle, cutter.PlaneAlignmentAngle,
+                         field_value(cut, "FlatCrossingsRemoved"), thin_walls)
 
 
 def recut_if_stages_fail(run, errors, times, cutter, stages, strategy, most_recuts):
@@ -244,7 +268,7 @@ def recut_if_stages_fail(run, errors, times, cutter, stages, strategy, most_recu
     attempts that failed (empty when the first cut succeeded);
     raises the last failure if every attempt failed."""
     asked = {name: cutter.GetPropertyValue(name)
-             for name in ("RemoveFlatCrossings", "PlaneTiltAngle", "PlaneAlignmentAngle")}
+             for name in ("RemoveFlatCrossings", "PlaneTiltAngle", "PlaneAlignmentAngle", "SizeByThickness")}
     failed = []
     attempts = None
     while True:
