@@ -186,6 +186,18 @@ using SegmentPoints = std::map<UndirectedEdge, std::vector<Index>>;
 // length, since TetGen -Y keeps its points out of the neighbouring facets'
 // larger diametral balls; CGAL's pinion 0.33 -> 0.11 degrees minimum
 // dihedral, CGAL's joint 0.62 -> 0.09, OpenSCAD example001 0.27 -> 0.01.
+// Session 23 measured lower floors once more, at K = 2 by bisection on the
+// 22 surfaces with thin walls (6 of the corpus, 16 unseen), against serial
+// TetGen -pq's goals (share under 10 degrees at most 1.5 x, minimum
+// dihedral at least half): size / 8 met the share goal on 16 and the angle
+// goal on 16 (2.52 M tetrahedra, 40,470 under 10 degrees); size / 64 on 17
+// and 14 (3.92 M, 58,900); size / 1000, about the input's own strip
+// widths, on 19 and 15 (6.78 M, 65,930). The finest floor is what serial
+// TetGen does (4,005 of its points lie within 0.01 of one 0.001-wide strip
+// of Cura's tronxy bed, whose minimum dihedral then rises 0.06 -> 3.52
+// degrees, serial 4.44), but it made Prusa's ender3 bed 2.62 M tetrahedra
+// (serial 0.22 M) and lowered femur's minimum 0.19 -> 0.00 degrees and
+// rr-vc-300's 1.21 -> 0.01.
 constexpr double kSegmentSpacingFloor = 1.0 / 8.0;
 
 class SegmentSpacing
