@@ -170,6 +170,41 @@ TEST(CostSamples, DecompositionByCostBalancesTheField)
   }
 }
 
+// Cutting by predicted cost without a size field balances predictUniformCost:
+// two unit cubes side by side, one of 12 triangles and one of 864. By
+// volume the plane falls in the gap between them, and the fine cube (4.3 per
+// input piece) costs about 16 x the coarse one; by cost it cuts the fine
+// cube, and the two subdomains' predicted tetrahedra, which the
+// decomposition reports as its measure, are within 5 % of their mean.
+TEST(CostSamples, DecompositionByUniformCostCountsTheInputPieces)
+{
+  const TriangleSurface two =
+    merged(subdividedBox({ 0, 0, 0 }, { 1, 1, 1 }, 1), subdividedBox({ 1.5, 0, 0 }, { 2.5, 1, 1 }, 12));
+  const double h = 0.5;
+  std::vector<double> imbalance;
+  for (BalanceCriterion criterion : { BalanceCriterion::Volume, BalanceCriterion::PredictedCost })
+  {
+    DecompositionOptions options;
+    options.numberOfSubdomains = 2;
+    options.direction = CutDirection::X;
+    options.criterion = criterion;
+    options.costMaximumSize = h;
+    const DecompositionResult r = decomposeVolumeBalanced(two, options);
+    ASSERT_TRUE(r.ok) << r.error;
+    const std::vector<double> cost = predictUniformCost(r.complex, h).tetrahedra;
+    const double mean = 0.5 * (cost[0] + cost[1]);
+    imbalance.push_back(std::max(cost[0], cost[1]) / mean);
+    if (criterion == BalanceCriterion::PredictedCost)
+    {
+      EXPECT_NEAR(r.subdomainMeasure[0], cost[0], 1e-9 * mean);
+      EXPECT_NEAR(r.subdomainMeasure[1], cost[1], 1e-9 * mean);
+      EXPECT_GT(r.complex.planes.front().origin[0], 1.5); // inside the fine cube
+    }
+  }
+  EXPECT_GT(imbalance[0], 1.8) << "by volume";
+  EXPECT_LT(imbalance[1], 1.05) << "by predicted cost";
+}
+
 // Sizes from samples: exact at a sample, a weighted mean between samples,
 // and refused (with the value named) when a sample is not a size.
 TEST(SampledSize, InterpolatesBetweenSamplesAndRefusesBadOnes)

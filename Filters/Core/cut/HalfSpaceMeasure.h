@@ -23,9 +23,10 @@ enum class BalanceCriterion
   Volume,
   BoundaryFacets,
   Nodes,
-  // the tetrahedra a size field predicts (PredictedCost.h, cost samples);
-  // the cuts are made by volume at the volume fraction that splits the
-  // part's cost as wanted, so this class measures it as Volume
+  // the tetrahedra TetGen is predicted to make, for a size field or one
+  // size (PredictedCost.h, cost samples); the cuts are made by volume at
+  // the volume fraction that splits the part's cost as wanted, so this
+  // class measures it as Volume
   PredictedCost
 };
 

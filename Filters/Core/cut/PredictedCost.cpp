@@ -175,9 +175,26 @@ PredictedCost predictUniformCost(const SurfaceComplex& c, double h)
   // (1.139 -> 1.011): Testing/Corpus/results/balance-k16-session22.md.
   for (int s = 0; s < c.subdomainCount; ++s)
   {
-    cost.tetrahedra[s] = 2.9 * cost.regularTetrahedra[s] + 4.3 * cost.inputPieces[s];
+    cost.tetrahedra[s] =
+      kUniformCostPerRegularTetrahedron * cost.regularTetrahedra[s] + kUniformCostPerInputPiece * cost.inputPieces[s];
   }
   return cost;
+}
+
+CostSamples sampleUniformCost(const TriangleSurface& closed, double h, std::size_t gridPoints)
+{
+  CostSamples samples = sampleCost(closed, [h](const Vec3&) { return h; }, gridPoints);
+  for (double& w : samples.weights)
+  {
+    w *= kUniformCostPerRegularTetrahedron;
+  }
+  for (const Triangle& t : closed.triangles)
+  {
+    samples.points.push_back((1.0 / 3.0) * (closed.points[t[0]] + closed.points[t[1]] + closed.points[t[2]]));
+    samples.weights.push_back(kUniformCostPerInputPiece);
+    samples.cells.push_back(0);
+  }
+  return samples;
 }
 
 namespace

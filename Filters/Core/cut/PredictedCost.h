@@ -47,6 +47,10 @@ PredictedCost predictCost(const SurfaceComplex& complex, const SizeFunction& siz
 // tetrahedra and the pieces of the input surface, which the boundary keeps
 // however small they are against h (PredictedCost.cpp).
 PredictedCost predictUniformCost(const SurfaceComplex& complex, double h);
+// Its weights: TetGen's tetrahedra per regular tetrahedron of edge h and
+// per piece of an input triangle.
+constexpr double kUniformCostPerRegularTetrahedron = 2.9;
+constexpr double kUniformCostPerInputPiece = 4.3;
 
 // The field no larger than `cap` (the mesher's largest size: it never
 // meshes coarser); `size` itself when cap is not positive.
@@ -70,6 +74,14 @@ struct CostSamples
   double spacing = 0;     // of the grid
 };
 CostSamples sampleCost(const TriangleSurface& closed, const SizeFunction& size, std::size_t gridPoints);
+
+// The samples of predictUniformCost's model, for cutting by cost without a
+// size field: the grid nodes of sampleCost for the size h, weighted by
+// kUniformCostPerRegularTetrahedron, and the centroid of every triangle of
+// `closed` (an input triangle: a cut splits it into pieces on both sides,
+// counted here once on the side of its centroid) weighted by
+// kUniformCostPerInputPiece.
+CostSamples sampleUniformCost(const TriangleSurface& closed, double h, std::size_t gridPoints);
 
 // For a cut of part `cell` by planes of normal n: the fraction of the
 // part's volume below the offset where `fraction` of its samples' weight

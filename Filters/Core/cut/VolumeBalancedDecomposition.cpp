@@ -1117,12 +1117,12 @@ bool PartCut::run(const Vec3& proposedNormal, std::string& error)
   return true;
 }
 
-// Whether the cuts balance predicted cost: BalanceCriterion::PredictedCost
-// with a size field (without one the cost is the volume's: cut and
-// measured as Volume).
+// Whether the cuts balance predicted cost (BalanceCriterion::PredictedCost):
+// the size field's, or without one predictUniformCost's at the mesher's
+// largest size (regular tetrahedra and the pieces of the input surface).
 bool cutsByCost(const DecompositionOptions& options)
 {
-  return options.criterion == BalanceCriterion::PredictedCost && static_cast<bool>(options.costSize);
+  return options.criterion == BalanceCriterion::PredictedCost;
 }
 
 // The mesher's largest size: costMaximumSize, or (0) its automatic size,
@@ -1377,11 +1377,9 @@ std::string measureBalance(
   // by cost: the field's regular tetrahedra by quadrature on the final
   // subdomains, more exact than the samples (whose grid columns go whole
   // to one side of a plane)
-  result.subdomainMeasure = cutsByCost(options)
-    ? predictCost(c, costField(options, result)).regularTetrahedra
-    : measureSubdomains(c,
-        options.criterion == BalanceCriterion::PredictedCost ? BalanceCriterion::Volume : options.criterion,
-        result.subdomainVolume);
+  result.subdomainMeasure = !cutsByCost(options) ? measureSubdomains(c, options.criterion, result.subdomainVolume)
+    : options.costSize ? predictCost(c, costField(options, result)).regularTetrahedra
+                       : predictUniformCost(c, largestMeshSize(options, result)).tetrahedra;
   double total = 0;
   for (double m : result.subdomainMeasure)
   {
@@ -1423,8 +1421,10 @@ DecompositionResult decomposeVolumeBalanced(
   Cutting cutting{ c, options, result, std::min(1e-6, 0.01 * options.balanceTolerance) };
   if (cutsByCost(options))
   {
-    cutting.costSamples = sampleCost(TriangleSurface{ c.points, c.triangles }, costField(options, result),
-      options.costSamples);
+    const TriangleSurface whole{ c.points, c.triangles };
+    cutting.costSamples = options.costSize
+      ? sampleCost(whole, costField(options, result), options.costSamples)
+      : sampleUniformCost(whole, largestMeshSize(options, result), options.costSamples);
   }
   if (K > 1 && options.strategy == CutStrategy::ParallelPlanes)
   {

@@ -49,7 +49,8 @@ struct DecompositionOptions
   double tiltDegrees = 10.0;
   InputCheckOptions inputCheck;   // see SurfaceInputCheck.h
   // BalanceCriterion::PredictedCost: the size field whose tetrahedra are
-  // balanced (empty: a uniform size, which balances volume), no larger than
+  // balanced (empty: predictUniformCost at costMaximumSize, regular
+  // tetrahedra and the pieces of the input surface), no larger than
   // costMaximumSize (the mesher's largest size; 0: the input's mean edge,
   // its automatic size), sampled at about costSamples grid nodes over the
   // bounding box (PredictedCost.h: sampleCost)
