@@ -40,13 +40,14 @@ namespace
 // field no larger than the mesher's largest size (`maximumSize`, or the
 // input's mean edge as the mesher's automatic MaximumVolume), or for that
 // size alone without a field (predictUniformCost, a model fitted on real
-// parts); a field must be positive at every point of the complex. Every
+// parts, counting the thickness cap where there is one); a field must be
+// positive at every point of the complex. Every
 // rank has the whole complex, so every rank gets the same costs, or the
 // same error. Without a field the subdomains went by
 // volume until session 22: on 10 real surfaces at K = 16 on 2 ranks the
 // largest rank had 1.02-1.82 x the mean tetrahedra (1.26 on average).
-bool predictedCosts(const ptm::DecompositionResult& result, const ptm::SizeField& field,
-  double maximumSize, std::vector<double>& predicted, std::string& error)
+bool predictedCosts(const ptm::DecompositionResult& result, const ptm::SizeField& field, double maximumSize,
+  const ptm::SizeFunction& thicknessCap, std::vector<double>& predicted, std::string& error)
 {
   predicted.clear();
   const double cap = maximumSize > 0 ? maximumSize : result.inputMeanEdgeLength;
@@ -54,7 +55,7 @@ bool predictedCosts(const ptm::DecompositionResult& result, const ptm::SizeField
   {
     if (cap > 0)
     {
-      predicted = ptm::predictUniformCost(result.complex, cap).tetrahedra;
+      predicted = ptm::predictUniformCost(result.complex, cap, thicknessCap).tetrahedra;
     }
     return true;
   }
@@ -253,6 +254,21 @@ std::string rayBlockSamples(vtkMultiProcessController* controller, const ptm::Tr
   }
   return {};
 }
+
+// The whole surface's thickness samples on every rank: each rank casts the
+// rays of its block (rayBlockSamples), a failure is agreed, and the blocks
+// are gathered in rank order. False when a rank failed (run reports it).
+bool measureThickness(vtkMultiProcessController* controller, ptm::StageRun& run, const ptm::TriangleSurface& surface,
+  double limit, std::vector<double>& xyzt)
+{
+  std::vector<double> mine;
+  if (run.FailedAnywhere(rayBlockSamples(controller, surface, limit, mine)))
+  {
+    return false;
+  }
+  xyzt = ptm::allGatherValues(controller, mine);
+  return true;
+}
 } // namespace
 
 vtkStandardNewMacro(vtkVolumeBalancedCutter);
@@ -347,8 +363,29 @@ int vtkVolumeBalancedCutter::RequestData(
     return run.Aborted();
   }
 
+  // Measured before the cuts, so the cost they balance counts the finer
+  // walls (PredictedCost.h: predictUniformCost).
+  std::vector<double> thickness;
+  const double thicknessLimit = this->MaximumSize > 0 ? this->MaximumSize : ptm::meanEdgeLength(surface);
+  if (this->SizeByThickness && !surface.triangles.empty())
+  {
+    run.Step(0.05, "Measuring the thickness");
+    if (!measureThickness(controller, run, surface, thicknessLimit, thickness))
+    {
+      return run.Failure();
+    }
+  }
+
   run.Step(0.1, "Cutting");
   ptm::DecompositionOptions options = decompositionOptions(this, ptm::rankCount(controller), size);
+  if (!thickness.empty())
+  {
+    // one lattice for the cuts, their measure and the assignment
+    const ptm::SizeFunction cap = ptm::thicknessCappedSize(nullptr, thickness, thicknessLimit);
+    options.costThicknessCap = ptm::onLattice(
+      [cap, thicknessLimit](const ptm::Vec3& p) { return std::min(thicknessLimit, cap(p)); }, surface.points,
+      0.5 * thicknessLimit);
+  }
   shareCutChecks(controller, run.Rank(), options);
   if (cadFaces)
   {
@@ -382,7 +419,7 @@ int vtkVolumeBalancedCutter::RequestData(
   std::vector<double> predicted;
   if (localError.empty())
   {
-    predictedCosts(result, size, this->MaximumSize, predicted, localError);
+    predictedCosts(result, size, this->MaximumSize, options.costThicknessCap, predicted, localError);
   }
   if (run.FailedAnywhere(localError))
   {
@@ -436,15 +473,7 @@ int vtkVolumeBalancedCutter::RequestData(
   }
   if (this->SizeByThickness)
   {
-    run.Step(0.9, "Measuring the thickness");
-    const double limit = this->MaximumSize > 0 ? this->MaximumSize : piece.inputMeanEdgeLength;
-    std::vector<double> mine;
-    localError = rayBlockSamples(controller, surface, limit, mine);
-    if (run.FailedAnywhere(localError))
-    {
-      return run.Failure();
-    }
-    ptm::addThicknessSamples(fd, ptm::allGatherValues(controller, mine), limit); // the blocks in rank order
+    ptm::addThicknessSamples(fd, thickness, thicknessLimit);
   }
   return run.Done();
 }

@@ -77,6 +77,53 @@ TEST(PredictedCost, UniformCostCountsThePiecesOfTheInput)
   EXPECT_NEAR(cost.tetrahedra[0], cost.tetrahedra[3], 1e-6);
 }
 
+// A thickness cap (+inf where it sets none) counts as the size where it is
+// smaller: growing from h / 2 at x = 0 to h at x = 1, and none beyond, it
+// gives the field min(h, cap) (continuous, which the quadrature needs), more
+// regular tetrahedra on the slabs at x < 1 and the same elsewhere, and the
+// same input pieces.
+TEST(PredictedCost, UniformCostCountsTheThicknessCap)
+{
+  const SurfaceComplex c = boxInFour(CutStrategy::ParallelPlanes);
+  const double h = 0.1;
+  const SizeFunction cap = [h](const Vec3& p) {
+    return p[0] < 1 ? h * (0.5 + 0.5 * p[0]) : std::numeric_limits<double>::infinity();
+  };
+  const SizeFunction field = [h](const Vec3& p) { return p[0] < 1 ? h * (0.5 + 0.5 * p[0]) : h; };
+  const PredictedCost plain = predictUniformCost(c, h), capped = predictUniformCost(c, h, cap);
+  const std::vector<double> expected = predictCost(c, field).regularTetrahedra;
+  for (int s = 0; s < 4; ++s)
+  {
+    EXPECT_NEAR(capped.regularTetrahedra[s], expected[s], 1e-9 * expected[s]) << s;
+    EXPECT_EQ(capped.inputPieces[s], plain.inputPieces[s]) << s;
+  }
+  EXPECT_GT(capped.regularTetrahedra[0], 3 * plain.regularTetrahedra[0]);
+  EXPECT_NEAR(capped.regularTetrahedra[3], plain.regularTetrahedra[3], 0.01 * plain.regularTetrahedra[3]);
+}
+
+// onLattice: a linear field comes back exactly (trilinear interpolation),
+// evaluated only at lattice nodes: at most about kLatticeNodes times
+// however often it is asked.
+TEST(PredictedCost, OnLatticeInterpolatesAndEvaluatesOnlyNodes)
+{
+  const TriangleSurface box = subdividedBox({ 0, 0, 0 }, { 2, 1, 1 }, 6);
+  int calls = 0;
+  const SizeFunction linear = [&calls](const Vec3& p) {
+    ++calls;
+    return 1.0 + p[0] + 2 * p[1] + 3 * p[2];
+  };
+  const SizeFunction lattice = onLattice(linear, box.points, 0.01);
+  double worst = 0;
+  for (int i = 0; i < 20000; ++i)
+  {
+    const Vec3 p{ 2.0 * ((i * 37) % 1000) / 1000, ((i * 91) % 997) / 997.0, ((i * 53) % 991) / 991.0 };
+    worst = std::max(worst, std::fabs(lattice(p) - (1.0 + p[0] + 2 * p[1] + 3 * p[2])));
+  }
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_LE(calls, 1.2 * kLatticeNodes);
+  EXPECT_GT(calls, 0);
+}
+
 // h = 0.05 + 0.1 x over the box [0, 2] x [0, 1]^2: the whole is
 // 6 sqrt(2) * 5 * (1 / 0.05^2 - 1 / 0.25^2) = 6 sqrt(2) * 1920, and the
 // subdomains at small x, where h is small, get far more.

@@ -1,6 +1,7 @@
 #include "PredictedCost.h"
 
 #include <algorithm>
+#include <memory>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -153,50 +154,6 @@ PredictedCost predictCost(const SurfaceComplex& c, const SizeFunction& size)
   return cost;
 }
 
-PredictedCost predictUniformCost(const SurfaceComplex& c, double h)
-{
-  PredictedCost cost = predictCost(c, [h](const Vec3&) { return h; });
-  // Fitted on real parts at one size (least squares of the relative error
-  // over 160 subdomains: 10 surfaces of the corpus and the unseen set at
-  // K = 16 by bisection, the sweep's sizes): 2.9 x the regular tetrahedra
-  // plus 4.3 per piece of the input surface. There the input's own small
-  // triangles, which the boundary keeps however small, drive TetGen's
-  // count; the field model above, fitted on a smooth ball, leaves them out
-  // (its outer-surface terms: predicted / measured 0.23-1.09, median per
-  // surface; this model 0.42-1.20, Prusa's M3x10 screw 0.27 -> 1.20: the
-  // eight subdomains of its thread hold 1,466-2,429 input pieces each,
-  // those of the head 26-72). Adding the pieces to the field model
-  // instead, with or without its area term, shared the subdomains out worse
-  // than volume on OpenSCAD's CSG and FreeCAD's test_holes00 (2 ranks, 1.02
-  // -> 1.12 and 1.24 -> 1.34); this model, fitted without the surface it
-  // was tried on, never did there, at 2, 4 or 8 ranks. On 14 surfaces
-  // outside the fit it changed 2-rank balances little (1.064 -> 1.066 mean
-  // by bisection), worse on 4 by up to 0.06 and better on Cura's nozzle
-  // (1.139 -> 1.011): Testing/Corpus/results/balance-k16-session22.md.
-  for (int s = 0; s < c.subdomainCount; ++s)
-  {
-    cost.tetrahedra[s] =
-      kUniformCostPerRegularTetrahedron * cost.regularTetrahedra[s] + kUniformCostPerInputPiece * cost.inputPieces[s];
-  }
-  return cost;
-}
-
-CostSamples sampleUniformCost(const TriangleSurface& closed, double h, std::size_t gridPoints)
-{
-  CostSamples samples = sampleCost(closed, [h](const Vec3&) { return h; }, gridPoints);
-  for (double& w : samples.weights)
-  {
-    w *= kUniformCostPerRegularTetrahedron;
-  }
-  for (const Triangle& t : closed.triangles)
-  {
-    samples.points.push_back((1.0 / 3.0) * (closed.points[t[0]] + closed.points[t[1]] + closed.points[t[2]]));
-    samples.weights.push_back(kUniformCostPerInputPiece);
-    samples.cells.push_back(0);
-  }
-  return samples;
-}
-
 namespace
 {
 // The z of the crossings of the column (x, y) with the triangles, signed
@@ -299,7 +256,7 @@ private:
     return value;
   }
 
-  const SizeFunction& Size;
+  const SizeFunction Size; // a copy: onLattice keeps it beyond the caller's field
   Vec3 Low;
   Vec3 Spacing;
   int Count[3] = { 0, 0, 0 };
@@ -454,6 +411,87 @@ void moveSamples(CostSamples& samples, int cell, const Vec3& normal, double offs
       samples.cells[i] = dot(normal, samples.points[i]) < offset ? below : above;
     }
   }
+}
+
+SizeFunction onLattice(const SizeFunction& field, const std::vector<Vec3>& points, double finest)
+{
+  if (!field || points.empty())
+  {
+    return field;
+  }
+  Vec3 low = points[0], high = points[0];
+  for (const Vec3& p : points)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      low[k] = std::min(low[k], p[k]);
+      high[k] = std::max(high[k], p[k]);
+    }
+  }
+  const Vec3 extent = high - low;
+  const double volume =
+    std::max(extent[0], finest) * std::max(extent[1], finest) * std::max(extent[2], finest);
+  const double spacing = std::max(finest, std::cbrt(volume / kLatticeNodes));
+  auto lattice = std::make_shared<CoarseSizes>(field, low, Vec3{ spacing, spacing, spacing }, extent);
+  return [lattice](const Vec3& p) { return lattice->at(p); };
+}
+
+namespace
+{
+// h, or no more than the thickness cap where there is one.
+SizeFunction uniformSize(double h, const SizeFunction& thicknessCap)
+{
+  if (!thicknessCap)
+  {
+    return [h](const Vec3&) { return h; };
+  }
+  return [h, thicknessCap](const Vec3& p) { return std::min(h, thicknessCap(p)); };
+}
+} // namespace
+
+PredictedCost predictUniformCost(const SurfaceComplex& c, double h, const SizeFunction& thicknessCap)
+{
+  PredictedCost cost = predictCost(c, uniformSize(h, thicknessCap));
+  // Fitted on real parts at one size (least squares of the relative error
+  // over 160 subdomains: 10 surfaces of the corpus and the unseen set at
+  // K = 16 by bisection, the sweep's sizes): 2.9 x the regular tetrahedra
+  // plus 4.3 per piece of the input surface. There the input's own small
+  // triangles, which the boundary keeps however small, drive TetGen's
+  // count; the field model above, fitted on a smooth ball, leaves them out
+  // (its outer-surface terms: predicted / measured 0.23-1.09, median per
+  // surface; this model 0.42-1.20, Prusa's M3x10 screw 0.27 -> 1.20: the
+  // eight subdomains of its thread hold 1,466-2,429 input pieces each,
+  // those of the head 26-72). Adding the pieces to the field model
+  // instead, with or without its area term, shared the subdomains out worse
+  // than volume on OpenSCAD's CSG and FreeCAD's test_holes00 (2 ranks, 1.02
+  // -> 1.12 and 1.24 -> 1.34); this model, fitted without the surface it
+  // was tried on, never did there, at 2, 4 or 8 ranks. On 14 surfaces
+  // outside the fit it changed 2-rank balances little (1.064 -> 1.066 mean
+  // by bisection), worse on 4 by up to 0.06 and better on Cura's nozzle
+  // (1.139 -> 1.011): Testing/Corpus/results/balance-k16-session22.md.
+  for (int s = 0; s < c.subdomainCount; ++s)
+  {
+    cost.tetrahedra[s] =
+      kUniformCostPerRegularTetrahedron * cost.regularTetrahedra[s] + kUniformCostPerInputPiece * cost.inputPieces[s];
+  }
+  return cost;
+}
+
+CostSamples sampleUniformCost(
+  const TriangleSurface& closed, double h, std::size_t gridPoints, const SizeFunction& thicknessCap)
+{
+  CostSamples samples = sampleCost(closed, uniformSize(h, thicknessCap), gridPoints);
+  for (double& w : samples.weights)
+  {
+    w *= kUniformCostPerRegularTetrahedron;
+  }
+  for (const Triangle& t : closed.triangles)
+  {
+    samples.points.push_back((1.0 / 3.0) * (closed.points[t[0]] + closed.points[t[1]] + closed.points[t[2]]));
+    samples.weights.push_back(kUniformCostPerInputPiece);
+    samples.cells.push_back(0);
+  }
+  return samples;
 }
 
 } // namespace ptm

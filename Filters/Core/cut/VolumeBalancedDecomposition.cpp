@@ -1379,7 +1379,7 @@ std::string measureBalance(
   // to one side of a plane)
   result.subdomainMeasure = !cutsByCost(options) ? measureSubdomains(c, options.criterion, result.subdomainVolume)
     : options.costSize ? predictCost(c, costField(options, result)).regularTetrahedra
-                       : predictUniformCost(c, largestMeshSize(options, result)).tetrahedra;
+                       : predictUniformCost(c, largestMeshSize(options, result), options.costThicknessCap).tetrahedra;
   double total = 0;
   for (double m : result.subdomainMeasure)
   {
@@ -1424,7 +1424,7 @@ DecompositionResult decomposeVolumeBalanced(
     const TriangleSurface whole{ c.points, c.triangles };
     cutting.costSamples = options.costSize
       ? sampleCost(whole, costField(options, result), options.costSamples)
-      : sampleUniformCost(whole, largestMeshSize(options, result), options.costSamples);
+      : sampleUniformCost(whole, largestMeshSize(options, result), options.costSamples, options.costThicknessCap);
   }
   if (K > 1 && options.strategy == CutStrategy::ParallelPlanes)
   {

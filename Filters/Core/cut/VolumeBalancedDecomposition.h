@@ -56,6 +56,11 @@ struct DecompositionOptions
   // bounding box (PredictedCost.h: sampleCost)
   SizeFunction costSize;
   double costMaximumSize = 0;
+  // without costSize: the thickness cap the boundary will follow
+  // (LocalThickness.h, thicknessCappedSize, best given onLattice; empty:
+  // none), which the uniform cost model then counts (PredictedCost.h,
+  // predictUniformCost)
+  SizeFunction costThicknessCap;
   std::size_t costSamples = 1000000;
   // Sharing the self-crossing checks of each cut among processes that all
   // run this same decomposition (every rank cuts the whole surface): of the
