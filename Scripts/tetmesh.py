@@ -52,8 +52,9 @@ def parse_arguments(argv):
     p.add_argument("--size-source", default=None,
                    help="a data set any ParaView reader opens (a background mesh, an earlier solution) "
                         "whose point array --size-array gives the size")
-    p.add_argument("--balance", default=None, choices=["Volume", "PredictedCost", "BoundaryFacets", "Nodes"],
-                   help="what the cuts make equal (default: PredictedCost with a size field, else Volume)")
+    p.add_argument("--balance", default="PredictedCost", choices=["Volume", "PredictedCost", "BoundaryFacets", "Nodes"],
+                   help="what the cuts make equal (default PredictedCost: the tetrahedra TetGen is predicted to make, "
+                   "for the size field or, without one, from the size and the input's triangles)")
     p.add_argument("--strategy", default="RecursiveBisection", choices=["RecursiveBisection", "ParallelPlanes"])
     p.add_argument("--direction", default="Inertia", choices=["Inertia", "LongestExtent", "X", "Y", "Z"])
     p.add_argument("--radius-edge-ratio", type=float, default=2.0, help="TetGen quality bound (default 2.0)")
@@ -348,8 +349,7 @@ def main(argv):
         run("read size source", size_source)
     cutter = run("cut", simple.VolumeBalancedCutter(
         Input=surface, NumberOfSubdomains=args.subdomains, Strategy=args.strategy, Direction=args.direction,
-        BalanceCriterion=args.balance or (
-            "PredictedCost" if args.size_expression or args.size_array else "Volume"),
+        BalanceCriterion=args.balance,
         SizeExpression=args.size_expression, SizeArray=args.size_array, SizeSource=size_source,
         MaximumSize=args.size, RemoveFlatCrossings=0 if args.keep_flat_crossings else 1,
         SizeByThickness=0 if args.no_thickness_size else 1))
