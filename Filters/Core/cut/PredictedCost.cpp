@@ -283,16 +283,12 @@ CostSamples sampleCost(const TriangleSurface& closed, const SizeFunction& size, 
   {
     return samples;
   }
-  Vec3 low = closed.points[0], high = closed.points[0];
+  Box box;
   for (const Vec3& p : closed.points)
   {
-    for (int k = 0; k < 3; ++k)
-    {
-      low[k] = std::min(low[k], p[k]);
-      high[k] = std::max(high[k], p[k]);
-    }
+    box.add(p);
   }
-  const Vec3 extent = high - low;
+  const Vec3 low = box.lo, extent = box.hi - box.lo;
   const double boxVolume = std::max(extent[0] * extent[1] * extent[2], 1e-30);
   const double step = std::cbrt(boxVolume / static_cast<double>(gridPoints));
   if (!(step > 0) || !std::isfinite(step))
@@ -419,20 +415,16 @@ SizeFunction onLattice(const SizeFunction& field, const std::vector<Vec3>& point
   {
     return field;
   }
-  Vec3 low = points[0], high = points[0];
+  Box box;
   for (const Vec3& p : points)
   {
-    for (int k = 0; k < 3; ++k)
-    {
-      low[k] = std::min(low[k], p[k]);
-      high[k] = std::max(high[k], p[k]);
-    }
+    box.add(p);
   }
-  const Vec3 extent = high - low;
+  const Vec3 extent = box.hi - box.lo;
   const double volume =
     std::max(extent[0], finest) * std::max(extent[1], finest) * std::max(extent[2], finest);
   const double spacing = std::max(finest, std::cbrt(volume / kLatticeNodes));
-  auto lattice = std::make_shared<CoarseSizes>(field, low, Vec3{ spacing, spacing, spacing }, extent);
+  auto lattice = std::make_shared<CoarseSizes>(field, box.lo, Vec3{ spacing, spacing, spacing }, extent);
   return [lattice](const Vec3& p) { return lattice->at(p); };
 }
 
