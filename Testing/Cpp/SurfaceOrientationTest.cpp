@@ -44,6 +44,24 @@ TEST(SurfaceOrientation, RepairsFlippedTrianglesAndInsideOutShell)
   EXPECT_GT(signedVolume(ball), 0);
 }
 
+// An inside-out file turned back must be the outward file exactly, corner
+// order included: the cutter's thickness rays start from the corners in
+// order, and on Cura's BIQU bed a rotated corner order moved a cut by
+// rounding and made TetGen split a shared triangle (session 24).
+TEST(SurfaceOrientation, TurnsAnInsideOutShellBackToTheSameTriangles)
+{
+  const TriangleSurface outward = icosphere({ 0, 0, 0 }, 1.0, 2);
+  TriangleSurface insideOut = outward;
+  for (auto& t : insideOut.triangles)
+  {
+    std::swap(t[0], t[2]);
+  }
+  OrientationResult r = orientShells(insideOut);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_EQ(r.report.invertedShells, 1u);
+  EXPECT_EQ(insideOut.triangles, outward.triangles);
+}
+
 TEST(SurfaceOrientation, CavityPointsIntoTheHole)
 {
   // both shells given outward: the inner one must be turned into a cavity

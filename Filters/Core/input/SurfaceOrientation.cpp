@@ -23,6 +23,14 @@ std::uint64_t edgeKey(Index a, Index b, Index pointCount)
   return static_cast<std::uint64_t>(lo) * static_cast<std::uint64_t>(pointCount) +
     static_cast<std::uint64_t>(hi);
 }
+
+// (a, b, c) -> (c, b, a): turned back, an inside-out file's triangle is the
+// outward file's exactly (same first corner), so both mesh alike bit for bit
+// (the thickness rays start from the corners in order).
+void reverse(Triangle& t)
+{
+  std::swap(t[0], t[2]);
+}
 } // namespace
 
 std::size_t mergeDuplicatePoints(TriangleSurface& s, std::size_t& droppedTriangles,
@@ -246,7 +254,7 @@ OrientationResult orientShells(TriangleSurface& s)
   {
     if (flip[t])
     {
-      std::swap(s.triangles[t][1], s.triangles[t][2]);
+      reverse(s.triangles[t]);
       ++report.reorientedTriangles;
     }
   }
@@ -293,7 +301,7 @@ OrientationResult orientShells(TriangleSurface& s)
     {
       for (Index t : shellTriangles[k])
       {
-        std::swap(s.triangles[t][1], s.triangles[t][2]);
+        reverse(s.triangles[t]);
       }
       volume[k] = -volume[k];
       ++report.invertedShells;
