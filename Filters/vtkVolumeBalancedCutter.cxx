@@ -32,6 +32,7 @@
 #include <cmath>
 #include <exception>
 #include <sstream>
+#include <utility>
 
 namespace
 {
@@ -255,6 +256,32 @@ std::string rayBlockSamples(vtkMultiProcessController* controller, const ptm::Tr
   return {};
 }
 
+// Collective: the whole input checked alike on every rank
+// (prepareInputSurface: merged, cleaned, oriented outward); false when it is
+// empty or refused (run reports why, agreed across ranks).
+bool checkedInput(ptm::StageRun& run, const ptm::TriangleSurface& surface, const ptm::InputCheckOptions& options,
+  ptm::PreparedSurface& prepared)
+{
+  std::string error;
+  if (surface.triangles.empty())
+  {
+    error = "the input has no triangles (is the reader's file empty or not a surface?)";
+  }
+  else
+  {
+    try
+    {
+      prepared = ptm::prepareInputSurface(surface, options);
+      error = prepared.ok ? "" : "the input surface cannot be meshed: " + prepared.error;
+    }
+    catch (const std::exception& e)
+    {
+      error = std::string("unexpected failure while checking the input: ") + e.what();
+    }
+  }
+  return !run.FailedAnywhere(error);
+}
+
 // The whole surface's thickness samples on every rank: each rank casts the
 // rays of its block (rayBlockSamples), a failure is agreed, and the blocks
 // are gathered in rank order. False when a rank failed (run reports it).
@@ -363,28 +390,36 @@ int vtkVolumeBalancedCutter::RequestData(
     return run.Aborted();
   }
 
-  // Measured before the cuts, so the cost they balance counts the finer
-  // walls (PredictedCost.h: predictUniformCost).
+  run.Step(0.04, "Checking the surface");
+  ptm::DecompositionOptions options = decompositionOptions(this, ptm::rankCount(controller), size);
+  ptm::PreparedSurface prepared;
+  if (!checkedInput(run, surface, options.inputCheck, prepared))
+  {
+    return run.Failure();
+  }
+
+  // Measured on the checked surface (outward, as the rays need) before the
+  // cuts, so the cost they balance counts the finer walls (PredictedCost.h:
+  // predictUniformCost).
   std::vector<double> thickness;
-  const double thicknessLimit = this->MaximumSize > 0 ? this->MaximumSize : ptm::meanEdgeLength(surface);
-  if (this->SizeByThickness && !surface.triangles.empty())
+  const double thicknessLimit = this->MaximumSize > 0 ? this->MaximumSize : ptm::meanEdgeLength(prepared.surface);
+  if (this->SizeByThickness)
   {
     run.Step(0.05, "Measuring the thickness");
-    if (!measureThickness(controller, run, surface, thicknessLimit, thickness))
+    if (!measureThickness(controller, run, prepared.surface, thicknessLimit, thickness))
     {
       return run.Failure();
     }
   }
 
   run.Step(0.1, "Cutting");
-  ptm::DecompositionOptions options = decompositionOptions(this, ptm::rankCount(controller), size);
   if (!thickness.empty())
   {
     // one lattice for the cuts, their measure and the assignment
     const ptm::SizeFunction cap = ptm::thicknessCappedSize(nullptr, thickness, thicknessLimit);
     options.costThicknessCap = ptm::onLattice(
-      [cap, thicknessLimit](const ptm::Vec3& p) { return std::min(thicknessLimit, cap(p)); }, surface.points,
-      0.5 * thicknessLimit);
+      [cap, thicknessLimit](const ptm::Vec3& p) { return std::min(thicknessLimit, cap(p)); },
+      prepared.surface.points, 0.5 * thicknessLimit);
   }
   shareCutChecks(controller, run.Rank(), options);
   if (cadFaces)
@@ -400,15 +435,8 @@ int vtkVolumeBalancedCutter::RequestData(
   bool threw = false;
   try
   {
-    if (surface.triangles.empty())
-    {
-      localError = "the input has no triangles (is the reader's file empty or not a surface?)";
-    }
-    else
-    {
-      result = ptm::decomposeVolumeBalanced(surface, options);
-      localError = result.ok ? "" : "the input surface cannot be meshed: " + result.error;
-    }
+    result = ptm::decomposeVolumeBalanced(std::move(prepared), options);
+    localError = result.ok ? "" : "the input surface cannot be meshed: " + result.error;
   }
   catch (const std::exception& e)
   {

@@ -2,6 +2,7 @@
 
     surface_tool.py normalize IN OUT.off   # STL (ASCII or binary) or OFF -> OFF of triangles
     surface_tool.py stats FILE.off         # one JSON line: size, volume, triangle shape
+    surface_tool.py invert IN.off OUT.off  # the same surface inside out (every triangle reversed)
 
 normalize merges points with bit-identical coordinates (an STL repeats every
 corner), drops triangles that use one point twice (an exactly collapsed
@@ -11,6 +12,7 @@ significant digits, so the same surface always gives the same bytes, whatever
 order the tessellator wrote it in.
 """
 import json
+import os
 import struct
 import sys
 
@@ -96,11 +98,24 @@ def normalize(src, dst):
     tris = tris[np.lexsort((tris[:, 2], tris[:, 1], tris[:, 0]))]
     if len(tris) < 4:
         raise SystemExit("%s: no closed surface (%d triangles)" % (src, len(tris)))
+    write_off(dst, points, tris)
+    print(json.dumps({"points": len(points), "triangles": len(tris), "collapsed_removed": int(collapsed.sum())}))
+
+
+def write_off(dst, points, tris):
+    """Triangles as OFF, coordinates with 17 significant digits (exact)."""
     with open(dst, "w") as f:
         f.write("OFF\n%d %d 0\n" % (len(points), len(tris)))
         f.write("".join("%.17g %.17g %.17g\n" % tuple(p) for p in points))
         f.write("".join("3 %d %d %d\n" % tuple(t) for t in tris))
-    print(json.dumps({"points": len(points), "triangles": len(tris), "collapsed_removed": int(collapsed.sum())}))
+
+
+def invert(src, dst):
+    """The surface inside out, as STL exports often are: the same points,
+    every triangle reversed (the mesher must orient it back itself)."""
+    points, tris = read_off(src)
+    os.makedirs(os.path.dirname(os.path.abspath(dst)), exist_ok=True)
+    write_off(dst, points, tris[:, ::-1])
 
 
 def triangle_angles(p):
@@ -132,6 +147,8 @@ def stats(path):
 if __name__ == "__main__":
     if len(sys.argv) == 4 and sys.argv[1] == "normalize":
         normalize(sys.argv[2], sys.argv[3])
+    elif len(sys.argv) == 4 and sys.argv[1] == "invert":
+        invert(sys.argv[2], sys.argv[3])
     elif len(sys.argv) == 3 and sys.argv[1] == "stats":
         print(json.dumps(stats(sys.argv[2])))
     else:

@@ -13,6 +13,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <unordered_map>
+#include <utility>
 
 namespace ptm
 {
@@ -1140,10 +1141,8 @@ SizeFunction costField(const DecompositionOptions& options, const DecompositionR
 
 // The complex of the whole checked surface, all of it part 0; false (with
 // the input check's error in result) if the check refused the surface.
-bool startComplex(const TriangleSurface& input, const DecompositionOptions& options, DecompositionResult& result,
-  double& totalVolume)
+bool startComplex(PreparedSurface prepared, DecompositionResult& result, double& totalVolume)
 {
-  PreparedSurface prepared = prepareInputSurface(input, options.inputCheck);
   result.inputCheck = prepared.counts;
   result.warnings = prepared.warnings;
   if (!prepared.ok)
@@ -1152,17 +1151,15 @@ bool startComplex(const TriangleSurface& input, const DecompositionOptions& opti
     return false;
   }
   result.orientation = prepared.orientation;
-  const TriangleSurface& surface = prepared.surface;
-  const std::vector<Index>& source = prepared.sourceOfTriangle;
   totalVolume = prepared.enclosedVolume;
   result.totalVolume = totalVolume;
-  result.inputMeanEdgeLength = meanEdgeLength(surface);
+  result.inputMeanEdgeLength = meanEdgeLength(prepared.surface);
 
   SurfaceComplex& c = result.complex;
-  c.points = surface.points;
-  c.triangles = surface.triangles;
+  c.points = std::move(prepared.surface.points);
+  c.triangles = std::move(prepared.surface.triangles);
   c.trianglePairs.assign(c.triangles.size(), SubdomainPair{ 0, -1 });
-  c.sourceFaces = source;
+  c.sourceFaces = std::move(prepared.sourceOfTriangle);
   return true;
 }
 
@@ -1401,8 +1398,12 @@ std::string measureBalance(
 }
 } // namespace
 
-DecompositionResult decomposeVolumeBalanced(
-  const TriangleSurface& input, const DecompositionOptions& options)
+DecompositionResult decomposeVolumeBalanced(const TriangleSurface& input, const DecompositionOptions& options)
+{
+  return decomposeVolumeBalanced(prepareInputSurface(input, options.inputCheck), options);
+}
+
+DecompositionResult decomposeVolumeBalanced(PreparedSurface prepared, const DecompositionOptions& options)
 {
   DecompositionResult result;
   const int K = options.numberOfSubdomains;
@@ -1412,7 +1413,7 @@ DecompositionResult decomposeVolumeBalanced(
     return result;
   }
   double totalVolume = 0;
-  if (!startComplex(input, options, result, totalVolume))
+  if (!startComplex(std::move(prepared), result, totalVolume))
   {
     return result;
   }

@@ -109,9 +109,15 @@ struct DecompositionResult
 };
 
 // The input triangles may be unmerged (STL); `sourceFaces` of the result
-// refer to the input triangle indices.
+// refer to the input triangle indices. Checks the input with
+// options.inputCheck (prepareInputSurface), then cuts the checked surface.
 DecompositionResult decomposeVolumeBalanced(
   const TriangleSurface& input, const DecompositionOptions& options);
+
+// The same, on a surface the caller already checked with options.inputCheck
+// (it measured something on the checked, outward surface first, as the
+// cutter does the thickness); a refused check is returned as the error.
+DecompositionResult decomposeVolumeBalanced(PreparedSurface prepared, const DecompositionOptions& options);
 
 // Human-readable names, for messages and properties.
 const char* toString(CutStrategy strategy);
