@@ -257,8 +257,8 @@ MeshedSubdomain meshSubdomain(ptm::SubdomainSurface& surface, const ptm::TetMesh
   }
   else if (r.attempts > 1)
   {
-    m.warnings.push_back("TetGen crashed, stalled or merged close points with the points and facets in their "
-                         "canonical order and meshed them in another order (attempt " +
+    m.warnings.push_back("TetGen crashed, stalled, merged close points or changed the surface with the points and "
+                         "facets in their canonical order and meshed them in another order (attempt " +
       std::to_string(r.attempts) + ", switches " + r.switchesUsed + ")");
   }
   m.sliverPoints = r.sliverRepairPoints;

@@ -374,6 +374,26 @@ TEST(TetGenSubdomainMesher, SliverPointsLieInsideAboveTheirTetrahedron)
   EXPECT_TRUE(boundarySliverPoints(s, mesh, 5.0).empty());
 }
 
+TEST(TetGenSubdomainMesher, ASplitSharedTriangleIsMeshedAgainInTheNextOrders)
+{
+  // TetGen 1.5 puts a point on an interface edge of this refined subdomain
+  // in the canonical order (a mesh the neighbour would not match); in the
+  // reversed order it keeps every triangle. Until session 24 the mesher
+  // then dropped the refinement, and where the unrefined surface split too
+  // the run failed (Prusa's rr-vc-300 at K = 64, parallel planes).
+  const TriangleSurface surface = regressionSurface("tetgen_splits_an_interface_edge.off");
+  const TetMeshingResult r = meshClosedSurface(surface, boundedOptions(0.148757));
+  EXPECT_GT(r.attempts, 1);
+  EXPECT_TRUE(r.splitTriangles.empty());
+  expectConformingMesh(surface, r, "the next order");
+  // in one order only, it is refused, naming the boundary
+  TetMeshingOptions one = boundedOptions(0.148757);
+  one.inputOrders = 1;
+  const TetMeshingResult canonical = meshClosedSurface(surface, one);
+  EXPECT_FALSE(canonical.ok);
+  EXPECT_NE(canonical.error.find("boundary differs"), std::string::npos) << canonical.error;
+}
+
 TEST(TetGenSubdomainMesher, SplittableTrianglesMayBeSplitOthersNot)
 {
   // TetGen 1.5 -Y splits two coplanar triangles of this surface into four

@@ -75,7 +75,8 @@ struct TetMeshingOptions
   // per TetGen run, processor and wall time; 0: 2 s + 30 us of processor time
   // per expected tetrahedron (about 6x TetGen's speed), 60 s + 10 us of wall time
   double timeLimitSeconds = 0.0;
-  // input orders tried after a crash or stall before the two-run fall-back,
+  // input orders tried after a crash, a stall or a mesh that changed the
+  // surface (meshClosedSurface), before the two-run fall-back,
   // 1..kInputOrders: the points as given, reversed, shuffled, then points
   // and facets shuffled (fixed seeds, so the same mesh on any rank); at
   // most kInputOrdersAfterAStall once a run has stalled. Fewer orders fail
@@ -115,7 +116,7 @@ struct TetMeshingResult
   std::string error;
   TetMesh mesh;
   std::string switchesUsed;
-  int attempts = 0; // TetGen runs: more than 1 if it crashed with the points in their first order
+  int attempts = 0; // TetGen runs: more than 1 if it crashed, stalled or broke the contract in the first order
   // true if TetGen crashed or stalled meshing and refining in one run, and
   // the mesh comes from two: the surface recovered (-pY), then refined (-rY)
   bool recoveredThenRefined = false;
