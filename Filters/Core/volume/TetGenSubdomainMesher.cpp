@@ -1206,7 +1206,6 @@ std::string meshError(
   return error;
 }
 
-
 // Input orders in which a mesh that changed the surface is tried
 // (meshClosedSurface): the canonical, reversed and two shuffled orders.
 constexpr int kOrdersForAChangedSurface = 4;
