@@ -69,25 +69,6 @@ inline Vec3 pointOnBothPlanes(const Vec3& n1, double d1, const Vec3& n2, double 
   const Vec3 line = cross(n1, n2);
   return (1.0 / dot(line, line)) * (d1 * cross(n2, line) + d2 * cross(line, n1));
 }
-// The length of the diagonal of the points' bounding box (0 for none): the
-// scale that relative tolerances refer to.
-inline double boundingBoxDiagonal(const std::vector<Vec3>& points)
-{
-  if (points.empty())
-  {
-    return 0;
-  }
-  Vec3 lo = points.front(), hi = points.front();
-  for (const Vec3& p : points)
-  {
-    for (int i = 0; i < 3; ++i)
-    {
-      lo[i] = std::min(lo[i], p[i]);
-      hi[i] = std::max(hi[i], p[i]);
-    }
-  }
-  return norm(hi - lo);
-}
 
 // Axis-aligned box of some points, for a cheap overlap test (empty: lo > hi).
 struct Box
@@ -115,5 +96,28 @@ struct Box
     return true;
   }
 };
+
+// The box of all the points (empty, lo > hi, for none).
+inline Box boxOf(const std::vector<Vec3>& points)
+{
+  Box box;
+  for (const Vec3& p : points)
+  {
+    box.add(p);
+  }
+  return box;
+}
+
+// The length of the diagonal of the points' bounding box (0 for none): the
+// scale that relative tolerances refer to.
+inline double boundingBoxDiagonal(const std::vector<Vec3>& points)
+{
+  if (points.empty())
+  {
+    return 0;
+  }
+  const Box box = boxOf(points);
+  return norm(box.hi - box.lo);
+}
 } // namespace ptm
 #endif

@@ -283,11 +283,7 @@ CostSamples sampleCost(const TriangleSurface& closed, const SizeFunction& size, 
   {
     return samples;
   }
-  Box box;
-  for (const Vec3& p : closed.points)
-  {
-    box.add(p);
-  }
+  const Box box = boxOf(closed.points);
   const Vec3 low = box.lo, extent = box.hi - box.lo;
   const double boxVolume = std::max(extent[0] * extent[1] * extent[2], 1e-30);
   const double step = std::cbrt(boxVolume / static_cast<double>(gridPoints));
@@ -415,11 +411,7 @@ SizeFunction onLattice(const SizeFunction& field, const std::vector<Vec3>& point
   {
     return field;
   }
-  Box box;
-  for (const Vec3& p : points)
-  {
-    box.add(p);
-  }
+  const Box box = boxOf(points);
   const Vec3 extent = box.hi - box.lo;
   const double volume =
     std::max(extent[0], finest) * std::max(extent[1], finest) * std::max(extent[2], finest);
