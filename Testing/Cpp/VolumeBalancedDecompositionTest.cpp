@@ -839,6 +839,80 @@ TEST(PlaneSplit, VertexWhoseNeighboursAllLieAcrossKeepsItsSide)
   EXPECT_EQ(c.interfaces[0].edges.size(), 4u);
 }
 
+namespace
+{
+// The box [-5, 5]^2 x [0, 10] whose bottom face rises to a pyramid with its
+// apex (point 8) at (0, 0, apexZ): a dent into the box for apexZ > 0, a
+// bump out of it for apexZ < 0. Outward.
+TriangleSurface boxWithApex(double apexZ)
+{
+  TriangleSurface box;
+  for (double z : { 0.0, 10.0 })
+  {
+    for (const auto& [x, y] : std::vector<std::array<double, 2>>{ { -5, -5 }, { 5, -5 }, { 5, 5 }, { -5, 5 } })
+    {
+      box.points.push_back({ x, y, z });
+    }
+  }
+  box.points.push_back({ 0, 0, apexZ });
+  for (Index i = 0; i < 4; ++i)
+  {
+    const Index j = (i + 1) % 4;
+    box.triangles.push_back({ i, j, 4 + j });
+    box.triangles.push_back({ i, 4 + j, 4 + i });
+    box.triangles.push_back({ 8, j, i }); // the bottom's fan
+  }
+  box.triangles.push_back({ 4, 5, 6 });
+  box.triangles.push_back({ 4, 6, 7 });
+  if (signedVolume(box) < 0)
+  {
+    box = flipped(box);
+  }
+  return box;
+}
+} // namespace
+
+// A vertex within the snap distance of the plane (0.03 off, 0.0035 of its
+// shortest edge) whose neighbours all lie across it, so far off that the
+// plane would cross its edges at 0.6 % of their length: it stays snapped
+// and its faces go across. At the tip of a dent the new interface then
+// covers it and the dent pokes through the interface (Prusa's bunny at K =
+// 48, parallel planes: TetGen refused the subdomain after three cuts). The
+// split reports the vertex, and made again with it kept off the plane it
+// cuts the tip off, leaving a small hole in the interface. At the tip of a
+// bump nothing crosses: the plane beside the tip lies outside the part.
+TEST(PlaneSplit, SnappedTipOfADentUnderTheInterfaceIsCutOff)
+{
+  SurfaceComplex dent = onePart(boxWithApex(5.0), { 0, 0, 1 });
+  PlaneSplitStats stats;
+  std::string error;
+  SurfaceComplex copy = dent;
+  EXPECT_FALSE(splitCell(copy, 0, { 0, 0, 1 }, 4.97, 0, 1, 2, {}, stats, error));
+  EXPECT_EQ(stats.coveredPokes, (std::vector<Index>{ 8 })) << error;
+  EXPECT_NE(error.find("under the new interface"), std::string::npos) << error;
+
+  PlaneSplitOptions keepOff;
+  keepOff.keepOffPlane = { 8 };
+  PlaneSplitStats cut;
+  ASSERT_TRUE(splitCell(dent, 0, { 0, 0, 1 }, 4.97, 0, 1, 2, keepOff, cut, error)) << error;
+  EXPECT_TRUE(cut.coveredPokes.empty());
+  ASSERT_EQ(dent.interfaces.size(), 1u);
+  EXPECT_EQ(dent.interfaces[0].edges.size(), 12u); // the section of the walls (2 triangles each), the hole around the tip
+  std::size_t tipPieces = 0;
+  for (std::size_t i = 0; i < dent.triangles.size(); ++i)
+  {
+    const Triangle& t = dent.triangles[i];
+    tipPieces += (dent.trianglePairs[i][0] == 2 && (t[0] == 8 || t[1] == 8 || t[2] == 8)) ? 1 : 0;
+  }
+  EXPECT_EQ(tipPieces, 4u);
+
+  SurfaceComplex bump = onePart(boxWithApex(-5.0), { 0, 0, 1 });
+  PlaneSplitStats harmless;
+  EXPECT_TRUE(splitCell(bump, 0, { 0, 0, 1 }, -4.97, 0, 1, 2, {}, harmless, error)) << error;
+  EXPECT_TRUE(harmless.coveredPokes.empty());
+  EXPECT_EQ(harmless.snappedPoints, 1u);
+}
+
 // A prism along x whose cross-section (z, y) is a square with a notch from
 // below: its walls rise from y = 0 to a reflex edge at y = 0.5. The plane
 // y = 0.5 runs exactly along that edge, with both walls under it: the new

@@ -45,7 +45,8 @@ struct PlaneSplitOptions
   // intersections) and 0 left near-degenerate slivers (7); 0.05 left none.
   double snapFraction = 0.05;
   // Vertices never snapped (sorted): where snapping one made a part's surface
-  // touch itself (see pinchedPoints), the caller splits again without it.
+  // touch or cross itself (see pinchedPoints, coveredPokes), the caller
+  // splits again without it.
   std::vector<Index> keepOffPlane;
 };
 
@@ -72,6 +73,10 @@ struct PlaneSplitStats
   std::vector<Index> pinchedPoints;
   bool pinchedOnPlane = false; // one of them lies exactly on the plane (not snapped)
   bool pinchedAtNotch = false;  // they are the ends of edges at the bottom of a notch (notchInPlane)
+  // Snapped vertices off the plane whose faces all went across and cross
+  // the new interface (a dent's tip within the snapping distance): the split
+  // fails with them listed, to be made again with them in keepOffPlane.
+  std::vector<Index> coveredPokes;
 };
 
 // Returns false with a message if the part's faces do not form a closed

@@ -567,8 +567,9 @@ PartCut::PartCut(SurfaceComplex& complex, const DecompositionOptions& options_,
   spacing = shortestEdges(c, cell);
 }
 
-// A split that pinches a part (PlaneSplitStats::pinchedPoints) is tried
-// again without snapping the pinching vertices; one pinched at a vertex
+// A split that pinches a part (PlaneSplitStats::pinchedPoints) or leaves
+// a snapped vertex poking through its new interface (coveredPokes) is tried
+// again without snapping those vertices; one pinched at a vertex
 // exactly on the plane is tried again a hair off it (a thousandth of the
 // mean edge). The balance loops correct the offset, and the clearance
 // search below moves it further, off the bottom of a notch the plane ran
@@ -601,7 +602,7 @@ Trial PartCut::tryCut(const Vec3& n, double at, double snap)
       trial.ok = true;
       break;
     }
-    if (trial.stats.pinchedPoints.empty())
+    if (trial.stats.pinchedPoints.empty() && trial.stats.coveredPokes.empty())
     {
       return trial;
     }
@@ -611,6 +612,7 @@ Trial PartCut::tryCut(const Vec3& n, double at, double snap)
     }
     std::vector<Index>& keep = splitOptions.keepOffPlane;
     keep.insert(keep.end(), trial.stats.pinchedPoints.begin(), trial.stats.pinchedPoints.end());
+    keep.insert(keep.end(), trial.stats.coveredPokes.begin(), trial.stats.coveredPokes.end());
     std::sort(keep.begin(), keep.end());
     keep.erase(std::unique(keep.begin(), keep.end()), keep.end());
     if (trial.stats.pinchedAtNotch)
