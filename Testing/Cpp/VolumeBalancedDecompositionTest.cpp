@@ -913,6 +913,36 @@ TEST(PlaneSplit, SnappedTipOfADentUnderTheInterfaceIsCutOff)
   EXPECT_EQ(harmless.snappedPoints, 1u);
 }
 
+// The same dent with the plane exactly through its tip: the surface touches
+// the new interface at that one point (femur at K = 48 with parallel
+// planes: the clearance search, for which points on the plane cost
+// nothing, put a plane through such a tip, and TetGen refused the
+// subdomain). The split reports the tip and the side of its faces, and a
+// hair off it, on that side, the cut is clean. Through the tip of a bump
+// there is no interface, and nothing to report.
+TEST(PlaneSplit, PlaneThroughTheTipOfADentIsMovedOffIt)
+{
+  SurfaceComplex dent = onePart(boxWithApex(5.0), { 0, 0, 1 });
+  PlaneSplitStats stats;
+  std::string error;
+  SurfaceComplex copy = dent;
+  EXPECT_FALSE(splitCell(copy, 0, { 0, 0, 1 }, 5.0, 0, 1, 2, {}, stats, error));
+  EXPECT_EQ(stats.touchingPoint, 8) << error;
+  EXPECT_EQ(stats.touchingSide, -1);
+  EXPECT_NE(error.find("touch"), std::string::npos) << error;
+
+  PlaneSplitStats clean;
+  ASSERT_TRUE(splitCell(dent, 0, { 0, 0, 1 }, 5.0 + 1e-3, 0, 1, 2, {}, clean, error)) << error;
+  EXPECT_EQ(clean.touchingSide, 0);
+  ASSERT_EQ(dent.interfaces.size(), 1u);
+  EXPECT_EQ(dent.interfaces[0].edges.size(), 8u); // the walls' section, no hole
+
+  SurfaceComplex bump = onePart(boxWithApex(-5.0), { 0, 0, 1 });
+  PlaneSplitStats harmless;
+  EXPECT_TRUE(splitCell(bump, 0, { 0, 0, 1 }, -5.0, 0, 1, 2, {}, harmless, error)) << error;
+  EXPECT_EQ(harmless.touchingSide, 0);
+}
+
 // A prism along x whose cross-section (z, y) is a square with a notch from
 // below: its walls rise from y = 0 to a reflex edge at y = 0.5. The plane
 // y = 0.5 runs exactly along that edge, with both walls under it: the new

@@ -22,6 +22,10 @@ struct VertexSide
   bool snapped = false; // off the plane but treated as on it
 };
 
+// Off the plane by less than this fraction of its shortest edge, a vertex
+// lies on it up to round-off (unsnapPokingVertices, findTouchingTips).
+constexpr double kLeastOffPlane = 1e-3;
+
 struct PairHash
 {
   std::size_t operator()(const std::pair<Index, Index>& p) const
@@ -199,6 +203,7 @@ struct CellSplit
   std::unordered_map<std::pair<Index, Index>, Index, PairHash> crossings{};
   std::unordered_map<Index, double> splitEdgeLength{}; // crossing point -> length of its edge
   std::vector<Index> keptPokes{}; // snapped vertices left poking through the plane (unsnapPokingVertices)
+  std::vector<std::pair<Index, int>> touchingTips{}; // vertices on the plane, all neighbours on one side (that side)
 
   void collectFaces();
   // Calls f(a, b, regionEdge) for every edge of the part's triangles
@@ -208,6 +213,7 @@ struct CellSplit
   void classifyVertices();
   void unsnapPokingVertices();
   void moveSnappedOntoPlane();
+  void findTouchingTips();
   void markOnPlane();
   bool notchInPlane();
   int sideOf(Index v) const { return vertices.at(v).side; }
@@ -344,7 +350,6 @@ void CellSplit::classifyVertices()
 // its edge where cuts run through earlier lines) and always stays snapped.
 void CellSplit::unsnapPokingVertices()
 {
-  constexpr double kLeastOffPlane = 1e-3;
   constexpr double kLeastCapFraction = 0.01;
   struct Seen
   {
@@ -387,6 +392,39 @@ void CellSplit::unsnapPokingVertices()
     --stats.snappedPoints;
     ++stats.unsnappedPoints;
   }
+}
+
+// A vertex on the plane up to round-off whose neighbours all lie on one
+// side of it, and which is not a hair off the plane on that side: the
+// part's surface touches the plane at that point only (or pokes through it
+// by round-off), and its faces go to that side. Listed with the side for
+// pokeUnderInterface.
+void CellSplit::findTouchingTips()
+{
+  std::unordered_map<Index, std::array<bool, 2>> sides; // neighbours below, above
+  auto look = [&](Index v, Index w) {
+    const VertexSide& info = vertices.at(v);
+    if (info.side == 0 && std::fabs(info.distance) < kLeastOffPlane * info.shortestEdge)
+    {
+      std::array<bool, 2>& seen = sides[v];
+      const int other = sideOf(w);
+      seen[0] = seen[0] || other <= 0;
+      seen[1] = seen[1] || other >= 0;
+    }
+  };
+  forEachEdge([&](Index a, Index b, bool) {
+    look(a, b);
+    look(b, a);
+  });
+  for (const auto& [v, seen] : sides)
+  {
+    const int side = seen[1] ? 1 : -1;
+    if (seen[0] != seen[1] && side * vertices.at(v).distance <= 0.0)
+    {
+      touchingTips.push_back({ v, side }); // on the plane or a hair across (on its faces' side it keeps clear)
+    }
+  }
+  std::sort(touchingTips.begin(), touchingTips.end());
 }
 
 // A snapped vertex inside the object (on interface boundaries only, such
@@ -901,31 +939,47 @@ bool CellSplit::piecesClosed(const std::vector<InterfaceRegion>& newRegions)
 // the plane, so their caps are cut off, however thin.
 bool CellSplit::pokeUnderInterface()
 {
-  if (keptPokes.empty() || c.interfaces.empty() || c.interfaces.back().planeId != planeId)
+  if ((keptPokes.empty() && touchingTips.empty()) || c.interfaces.empty() ||
+    c.interfaces.back().planeId != planeId)
   {
     return false;
   }
   const std::vector<DirectedEdge>& loops = c.interfaces.back().edges;
   Vec3 e1, e2;
   planeBasis(n, e1, e2);
-  std::vector<Index> covered;
+  auto covered = [&](Index v) { return windingNumber2D(c.points, loops, e1, e2, c.points[v]) != 0; };
   for (Index v : keptPokes)
   {
-    if (windingNumber2D(c.points, loops, e1, e2, c.points[v]) != 0)
+    if (covered(v))
     {
-      covered.push_back(v);
+      stats.coveredPokes.push_back(v);
     }
   }
-  if (covered.empty())
+  for (const auto& [v, side] : touchingTips)
+  {
+    if (covered(v) && stats.coveredPokes.empty() && stats.touchingSide == 0)
+    {
+      stats.touchingPoint = v;
+      stats.touchingSide = side;
+    }
+  }
+  std::sort(stats.coveredPokes.begin(), stats.coveredPokes.end());
+  if (stats.coveredPokes.empty() && stats.touchingSide == 0)
   {
     return false;
   }
-  std::sort(covered.begin(), covered.end());
-  stats.coveredPokes = covered;
   std::ostringstream msg;
-  msg << "cutting plane " << planeId << " left point " << covered.front() << " "
-      << std::fabs(vertices.at(covered.front()).distance)
-      << " across it, under the new interface (the faces at the point cross it)";
+  if (!stats.coveredPokes.empty())
+  {
+    const Index v = stats.coveredPokes.front();
+    msg << "cutting plane " << planeId << " left point " << v << " " << std::fabs(vertices.at(v).distance)
+        << " across it, under the new interface (the faces at the point cross it)";
+  }
+  else
+  {
+    msg << "cutting plane " << planeId << " runs through point " << stats.touchingPoint
+        << ", whose faces all lie on one side, under the new interface (they touch it there)";
+  }
   error = msg.str();
   return true;
 }
@@ -1006,6 +1060,7 @@ bool splitCell(SurfaceComplex& c, int cell, const Vec3& n, double offset, int pl
   split.collectFaces();
   split.classifyVertices();
   split.unsnapPokingVertices();
+  split.findTouchingTips();
   split.moveSnappedOntoPlane();
   split.markOnPlane();
   if (split.notchInPlane())

@@ -24,7 +24,11 @@
 //  * the new interface region (pair {below, above}, normal = plane normal) is
 //    bounded by the edges left open by the faces now labeled `below`; a
 //    plane through the gap between two bodies of the part leaves none, which
-//    is a valid cut with no interface.
+//    is a valid cut with no interface;
+//  * a split whose interface touches itself (pinchedPoints) or that leaves
+//    the tip of a dent on or through the plane under the new interface
+//    (coveredPokes, touchingSide) fails with those points listed, for the
+//    caller to split again otherwise.
 #include "SurfaceComplex.h"
 
 #include <string>
@@ -77,6 +81,13 @@ struct PlaneSplitStats
   // the new interface (a dent's tip within the snapping distance): the split
   // fails with them listed, to be made again with them in keepOffPlane.
   std::vector<Index> coveredPokes;
+  // A vertex on the plane up to round-off whose faces all lie on one side
+  // (+1 above, -1 below), under the new interface: the part touches itself
+  // there (femur at K = 48, parallel planes: the clearance search put the
+  // plane through the tip of a dent). The split fails; the caller moves the
+  // plane a hair away from that side.
+  Index touchingPoint = -1;
+  int touchingSide = 0;
 };
 
 // Returns false with a message if the part's faces do not form a closed

@@ -571,7 +571,9 @@ PartCut::PartCut(SurfaceComplex& complex, const DecompositionOptions& options_,
 // a snapped vertex poking through its new interface (coveredPokes) is tried
 // again without snapping those vertices; one pinched at a vertex
 // exactly on the plane is tried again a hair off it (a thousandth of the
-// mean edge). The balance loops correct the offset, and the clearance
+// mean edge), and so is one whose surface touches the new interface at a
+// vertex on the plane (touchingSide: moved so the vertex lies on its
+// faces' side). The balance loops correct the offset, and the clearance
 // search below moves it further, off the bottom of a notch the plane ran
 // along too: Trial::notchPoints count for it even on the plane. (Counting
 // the points of every pinch so, OCCT's Bottom at K = 16 with recursive
@@ -602,7 +604,7 @@ Trial PartCut::tryCut(const Vec3& n, double at, double snap)
       trial.ok = true;
       break;
     }
-    if (trial.stats.pinchedPoints.empty() && trial.stats.coveredPokes.empty())
+    if (trial.stats.pinchedPoints.empty() && trial.stats.coveredPokes.empty() && trial.stats.touchingSide == 0)
     {
       return trial;
     }
@@ -610,6 +612,7 @@ Trial PartCut::tryCut(const Vec3& n, double at, double snap)
     {
       at += 1e-3 * result.inputMeanEdgeLength;
     }
+    at -= trial.stats.touchingSide * 1e-3 * result.inputMeanEdgeLength;
     std::vector<Index>& keep = splitOptions.keepOffPlane;
     keep.insert(keep.end(), trial.stats.pinchedPoints.begin(), trial.stats.pinchedPoints.end());
     keep.insert(keep.end(), trial.stats.coveredPokes.begin(), trial.stats.coveredPokes.end());
