@@ -936,7 +936,11 @@ bool CellSplit::piecesClosed(const std::vector<InterfaceRegion>& newRegions)
 // a dent stayed snapped, and TetGen refused subdomain 13 after each of
 // tetmesh.py's first three cuts. The vertices are listed in
 // stats.coveredPokes (sorted); the caller cuts again with them kept off
-// the plane, so their caps are cut off, however thin.
+// the plane, so their caps are cut off, however thin. Failing none of
+// those, the first touching tip (findTouchingTips) under the interface is
+// reported with its faces' side (stats.touchingPoint, touchingSide): the
+// surface touches the interface there, and the caller moves the plane off
+// it (femur at K = 48 with parallel planes, subdomain 27).
 bool CellSplit::pokeUnderInterface()
 {
   if ((keptPokes.empty() && touchingTips.empty()) || c.interfaces.empty() ||
@@ -955,12 +959,13 @@ bool CellSplit::pokeUnderInterface()
       stats.coveredPokes.push_back(v);
     }
   }
-  for (const auto& [v, side] : touchingTips)
+  for (auto it = touchingTips.begin(); it != touchingTips.end() && stats.coveredPokes.empty(); ++it)
   {
-    if (covered(v) && stats.coveredPokes.empty() && stats.touchingSide == 0)
+    if (covered(it->first))
     {
-      stats.touchingPoint = v;
-      stats.touchingSide = side;
+      stats.touchingPoint = it->first;
+      stats.touchingSide = it->second;
+      break;
     }
   }
   std::sort(stats.coveredPokes.begin(), stats.coveredPokes.end());
