@@ -2,6 +2,7 @@
 
 #include "CADFaceIds.h"
 #include "GlobalMeshNumbering.h"
+#include "OffFormat.h"
 #include "PhaseLog.h"
 #include "PipelineRequests.h"
 #include "PolyDataConversion.h"
@@ -39,6 +40,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
 #include <map>
 #include <exception>
 #include <limits>
@@ -560,6 +563,30 @@ ptm::TetMeshingOptions meshingOptions(vtkParallelTetMesher* filter, const ptm::C
   return options;
 }
 
+// Where the environment names a folder (PTM_FAILED_SURFACE_DIR), a subdomain
+// surface TetGen could not mesh in any way is written there as
+// subdomain-ID.off, as it came to the mesher (before the boundary
+// refinement), so the failure can be run again with tetgen alone, and
+// subdomain-ID.sides, per triangle the subdomain across (-1: outer); the
+// note for the error message, or "".
+std::string keepFailedSurface(const ptm::SubdomainSurface& surface, long long id)
+{
+  const char* dir = std::getenv("PTM_FAILED_SURFACE_DIR");
+  if (!dir || !*dir)
+  {
+    return "";
+  }
+  const std::string path = std::string(dir) + "/subdomain-" + std::to_string(id) + ".off";
+  std::ofstream out(path);
+  ptm::writeOff(out, surface.surface);
+  std::ofstream sides(std::string(dir) + "/subdomain-" + std::to_string(id) + ".sides");
+  for (const auto other : surface.otherSide)
+  {
+    sides << other << "\n";
+  }
+  return out && sides ? " (its surface: " + path + ")" : " (its surface could not be written to " + path + ")";
+}
+
 // Meshes every subdomain of `owned` in turn (progress and warnings on
 // `filter`); the first failure, naming its subdomain, or "".
 std::string meshOwnedSubdomains(vtkParallelTetMesher* filter, const ptm::ComplexPiece& piece,
@@ -578,6 +605,7 @@ std::string meshOwnedSubdomains(vtkParallelTetMesher* filter, const ptm::Complex
     const auto start = std::chrono::steady_clock::now();
     try
     {
+      const ptm::SubdomainSurface asCut = std::getenv("PTM_FAILED_SURFACE_DIR") ? owned.surfaces[k] : ptm::SubdomainSurface{};
       MeshedSubdomain m = meshSubdomain(owned.surfaces[k], options, refinement, field);
       for (const std::string& w : m.warnings)
       {
@@ -585,7 +613,7 @@ std::string meshOwnedSubdomains(vtkParallelTetMesher* filter, const ptm::Complex
       }
       if (!m.error.empty())
       {
-        return where + m.error;
+        return where + m.error + keepFailedSurface(asCut, owned.ids[k]);
       }
       owned.pointsAdded[k] = m.pointsAdded;
       owned.sliverPoints[k] = m.sliverPoints;
