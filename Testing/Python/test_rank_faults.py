@@ -15,7 +15,9 @@ complete. Run with 2 ranks (also passes with 1):
 A hang fails the test by CTest's timeout; every case prints its time.
 """
 import os
+import shutil
 import sys
+import tempfile
 import time
 
 import ptm_testing as t
@@ -40,6 +42,7 @@ def expect_failure(label, proxies, expected, absent=None):
         line = [m for m in text.split("\n") if expected in m][0]
         print("%-34s every rank failed in %.2f s: ...%s" % (label, time.time() - start, line[-150:]))
         sys.stdout.flush()
+    return text
 
 
 def pipeline(path, K, **cutter_properties):
@@ -66,7 +69,22 @@ def main():
     proxies = pipeline(os.path.join(t.DATA, "bad", "bar_with_crossing_box.stl"), 2,
                        Strategy="ParallelPlanes", Direction="X", CheckSelfIntersections=0)
     who = ("rank %d: " % last) if t.size() > 1 else ""
-    expect_failure("failure in subdomain 1 only", proxies, who + "subdomain 1: the surface intersects itself")
+    # the failed subdomain's surface is kept where PTM_FAILED_SURFACE_DIR says
+    keep = tempfile.mkdtemp(prefix="ptm_failed_")
+    os.environ["PTM_FAILED_SURFACE_DIR"] = keep
+    kept = os.path.join(keep, "subdomain-1.off")
+    text = expect_failure("failure in subdomain 1 only", proxies, who + "subdomain 1: the surface intersects itself")
+    del os.environ["PTM_FAILED_SURFACE_DIR"]
+    if t.rank() == last:
+        assert "(its surface: %s)" % kept in text, text
+        with open(kept) as f:
+            head = f.read().split("\n")[:2]
+        triangles = int(head[1].split()[1])
+        with open(os.path.join(keep, "subdomain-1.sides")) as f:
+            sides = [int(x) for x in f.read().split()]
+        assert head[0] == "OFF" and triangles > 0 and len(sides) == triangles and sides.count(0) > 0, (head, len(sides))
+        print("the failed subdomain kept: %d triangles, %d on the interface" % (triangles, sides.count(0)))
+    shutil.rmtree(keep)
     delete(proxies)
 
     # 2. abort on the last rank only, in the middle of the volume meshing
