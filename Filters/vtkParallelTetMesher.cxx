@@ -636,6 +636,7 @@ std::string meshOwnedSubdomains(vtkParallelTetMesher* filter, const ptm::Complex
 }
 } // namespace
 
+static_assert(ptm::kDefaultSegmentSpacingFloor == 0.125, "BoundarySpacingFloor's default in the header and XML");
 vtkStandardNewMacro(vtkParallelTetMesher);
 vtkCxxSetObjectMacro(vtkParallelTetMesher, Controller, vtkMultiProcessController);
 
@@ -684,6 +685,8 @@ std::string vtkParallelTetMesher::PropertyError()
     "CoplanarTolerance", "lie in [0, 10] degrees", this->CoplanarTolerance);
   checks.Require(this->BoundaryMinimumAngle > 0.0 && this->BoundaryMinimumAngle <= 34.0,
     "BoundaryMinimumAngle", "lie in (0, 34] degrees", this->BoundaryMinimumAngle);
+  checks.Require(this->BoundarySpacingFloor >= 1.0 / 1024 && this->BoundarySpacingFloor <= 1.0,
+    "BoundarySpacingFloor", "lie in [1/1024, 1] (a fraction of the local size)", this->BoundarySpacingFloor);
   return checks.Ok() ? "" : checks.Message();
 }
 
@@ -718,6 +721,7 @@ int vtkParallelTetMesher::RequestData(
   ptm::SurfaceRefinementOptions refinement;
   refinement.size = regularTetrahedronEdge(options.maximumVolume);
   refinement.minimumAngleDegrees = this->BoundaryMinimumAngle;
+  refinement.segmentSpacingFloor = this->BoundarySpacingFloor;
   refinement.coplanarToleranceDegrees = this->CoplanarTolerance;
   refinement.sizeAt = ptm::boundarySizeOf(field, input ? input->GetFieldData() : nullptr); // thickness-capped
   const bool refine = this->BoundaryRefinement && options.maximumVolume > 0;
@@ -757,5 +761,6 @@ void vtkParallelTetMesher::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SizeExpression: " << this->SizeExpression << "\n";
   os << indent << "BoundaryRefinement: " << this->BoundaryRefinement << "\n";
   os << indent << "BoundaryMinimumAngle: " << this->BoundaryMinimumAngle << "\n";
+  os << indent << "BoundarySpacingFloor: " << this->BoundarySpacingFloor << "\n";
   os << indent << "CoplanarTolerance: " << this->CoplanarTolerance << "\n";
 }

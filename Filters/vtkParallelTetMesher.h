@@ -97,6 +97,12 @@ public:
   vtkBooleanMacro(BoundaryRefinement, bool);
   vtkSetMacro(BoundaryMinimumAngle, double);
   vtkGetMacro(BoundaryMinimumAngle, double);
+  /// The shortest spacing the refinement splits an input edge at beside a
+  /// thin input triangle, as a fraction of the local size, in [1/1024, 1]
+  /// (default 1/8): lower follows thin strips of CAD exports down to their
+  /// width, with better tetrahedra there and many more of them.
+  vtkSetMacro(BoundarySpacingFloor, double);
+  vtkGetMacro(BoundarySpacingFloor, double);
   ///@}
 
   ///@{
@@ -151,6 +157,7 @@ protected:
   std::string SizeExpression;
   bool BoundaryRefinement = true;
   double BoundaryMinimumAngle = 20.7;
+  double BoundarySpacingFloor = 0.125; // the core's default (checked in the .cxx) and the XML's
   double CoplanarTolerance = 0.0;
   vtkMultiProcessController* Controller = nullptr;
 

@@ -81,6 +81,10 @@ def parse_arguments(argv):
                    "where a wall is thinner than the size, measured by rays along the inward normals)")
     p.add_argument("--no-boundary-refinement", action="store_true",
                    help="mesh the subdomain surfaces as they are (TetGen keeps every input sliver)")
+    p.add_argument("--boundary-spacing-floor", type=float, default=0.125,
+                   help="shortest spacing, as a fraction of the local size, at which the boundary refinement "
+                        "splits an input edge beside a thin input triangle (default 1/8; lower follows thin "
+                        "strips of CAD exports, with better and many more tetrahedra)")
     p.add_argument("--coplanar-tolerance", type=float, default=0.0,
                    help="degrees: boundary refinement merges input triangles this close to coplanar "
                         "(changes the surface slightly; default 0 keeps it exactly)")
@@ -385,6 +389,7 @@ def main(argv):
         SliverRepairAngle=args.sliver_repair_angle,
         MaximumVolume=volume,
         BoundaryRefinement=0 if args.no_boundary_refinement else 1,
+        BoundarySpacingFloor=args.boundary_spacing_floor,
         CoplanarTolerance=args.coplanar_tolerance, SizeExpression=args.size_expression)
     recuts = recut_if_stages_fail(
         run, errors, times, cutter, [("interface", interfaces), ("relax", relaxed), ("volume meshing", mesher)],

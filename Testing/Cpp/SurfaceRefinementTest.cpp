@@ -227,6 +227,28 @@ TEST(SurfaceRefinement, CoplanarToleranceMergesNearlyFlatFacesAndReportsTheChang
   EXPECT_TRUE(closedAndConsistent(merged.surface));
 }
 
+// A bar 0.06 x 0.04 thin at the size 1: beside its long thin faces the
+// long edges are split no finer than the floor, an eighth of the size by
+// default, so the strips keep thin triangles; a floor of 1/64 lets them be
+// split at the bar's own width (BoundarySpacingFloor).
+TEST(SurfaceRefinement, ALowerSpacingFloorFollowsAThinStrip)
+{
+  SurfaceRefinementOptions options;
+  options.size = 1.0;
+  SubdomainSurface coarse = wholeSurface(thinBar());
+  const SurfaceRefinementResult byDefault = refineSubdomainSurface(coarse, options);
+  ASSERT_TRUE(byDefault.ok) << byDefault.error;
+  options.segmentSpacingFloor = 1.0 / 64;
+  SubdomainSurface fine = wholeSurface(thinBar());
+  const SurfaceRefinementResult lower = refineSubdomainSurface(fine, options);
+  ASSERT_TRUE(lower.ok) << lower.error;
+  EXPECT_TRUE(closedAndConsistent(fine.surface));
+  EXPECT_NEAR(signedVolume(fine.surface), 0.0024, 1e-15);
+  EXPECT_GT(lower.pointsAdded, 2 * byDefault.pointsAdded);
+  EXPECT_LT(smallestAngleDegrees(coarse.surface), 20.0);
+  EXPECT_GT(smallestAngleDegrees(fine.surface), 20.0);
+}
+
 TEST(SurfaceRefinement, RefusesNonsenseOptions)
 {
   SubdomainSurface s = wholeSurface(thinBar());
@@ -238,4 +260,9 @@ TEST(SurfaceRefinement, RefusesNonsenseOptions)
   const SurfaceRefinementResult r = refineSubdomainSurface(s, options);
   EXPECT_FALSE(r.ok);
   EXPECT_NE(r.error.find("minimum angle"), std::string::npos);
+  options.minimumAngleDegrees = 20;
+  options.segmentSpacingFloor = 0.0;
+  const SurfaceRefinementResult noFloor = refineSubdomainSurface(s, options);
+  EXPECT_FALSE(noFloor.ok);
+  EXPECT_NE(noFloor.error.find("segment spacing floor"), std::string::npos);
 }

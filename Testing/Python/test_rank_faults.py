@@ -123,6 +123,10 @@ def main():
     proxies[-1].RadiusEdgeRatio = 0.5
     expect_failure("RadiusEdgeRatio 0.5", proxies, "ParallelTetMesher: RadiusEdgeRatio must lie in [1, 100], not 0.5")
     proxies[-1].RadiusEdgeRatio = 2
+    proxies[-1].BoundarySpacingFloor = 0
+    expect_failure("BoundarySpacingFloor 0", proxies,
+                   "ParallelTetMesher: BoundarySpacingFloor must lie in [1/1024, 1] (a fraction of the local size), not 0")
+    proxies[-1].BoundarySpacingFloor = 0.125
     proxies[2].MinimumAngle = 50
     expect_failure("MinimumAngle 50", proxies, "InterfaceTriangulator: MinimumAngle must lie in [1, 34] degrees, not 50",
                    absent="MaximumEdgeLength")

@@ -153,7 +153,7 @@ using SegmentPoints = std::map<UndirectedEdge, std::vector<Index>>;
 // good facets do not count: splitting the slightly long edge of a good
 // triangle only makes worse ones (a gmsh fillet from the corpus, K = 1: 0.33 %
 // of the tetrahedra under 10 degrees instead of 0.14 %). Never below an
-// eighth of the size (kSegmentSpacingFloor): a floor of size / 32 split the
+// eighth of the size (kDefaultSegmentSpacingFloor): a floor of size / 32 split the
 // long input edges beside the slivers a cut leaves into 121,000 points on
 // CGAL's joint at K = 16 (804,000 tetrahedra, 1.29 % under 10 degrees, where
 // K = 2 makes 86,000); size / 8 gave 295,000 and 1.44 %. The price is on
@@ -198,15 +198,23 @@ using SegmentPoints = std::map<UndirectedEdge, std::vector<Index>>;
 // degrees, serial 4.44), but it made Prusa's ender3 bed 2.62 M tetrahedra
 // (serial 0.22 M) and lowered femur's minimum 0.19 -> 0.00 degrees and
 // rr-vc-300's 1.21 -> 0.01.
-constexpr double kSegmentSpacingFloor = 1.0 / 8.0;
+// Session 26, Kicad's heat sink HS-125 (kicad-packages3d, tessellated by
+// OCCT; the size 7.766, K = 1): 14,854 of its 104,920 boundary triangles
+// had angles of 5.2 degrees, strips 0.056 wide split at the floor, and
+// 24,052 of 289,318 tetrahedra (8.31 %) were under 10 degrees (serial
+// TetGen -pq2.0: 1.245 % of 535,722). With a floor of 1/64: 0.089 % of
+// 1,182,366 and 1.91 degrees (serial 4.21), but the volume meshing took
+// 660 s instead of 32 s (on a loaded machine). So the floor is the
+// SurfaceRefinementOptions::segmentSpacingFloor a user may lower.
 
 class SegmentSpacing
 {
 public:
   SegmentSpacing(const std::vector<Vec3>& points, const std::vector<Triangle>& triangles,
-    const std::vector<int>& label, double size, const SizeFunction& sizeAt, double boundRadians)
+    const std::vector<int>& label, double size, const SizeFunction& sizeAt, double boundRadians, double floor)
     : Points(points)
     , Size(size)
+    , Floor(floor)
     , SizeAt(sizeAt)
     , FacetsOf(points.size())
     , OnInterface(points.size(), 0)
@@ -280,7 +288,8 @@ public:
             {
               continue;
             }
-            const double floor = this->OnInterface[v] ? kThinPieceSpacingFraction : kSegmentSpacingFloor;
+            const double floor =
+              this->OnInterface[v] ? std::max(kThinPieceSpacingFraction, this->Floor) : this->Floor;
             spacing = std::min(spacing, std::max(floor * local, distanceToSegment(this->Points[v], pa, this->Points[b])));
           }
         }
@@ -303,6 +312,7 @@ private:
 
   const std::vector<Vec3>& Points;
   double Size;
+  double Floor; // of the spacing beside a poor facet's corner, a fraction of the local size
   const SizeFunction& SizeAt;
   std::vector<std::vector<int>> FacetsOf; // the facets each point is a corner of a poor triangle of
   std::vector<char> OnInterface;          // a point of an interface triangle (a contour point)
@@ -315,14 +325,15 @@ private:
 // so the same surface always numbers them alike. Edges next to an interface
 // are contours, which the neighbouring subdomain has too: never split here.
 SegmentPoints splitSegments(SubdomainSurface& s, const std::vector<std::array<Index, 3>>& across,
-  const std::vector<int>& label, double size, const SizeFunction& sizeAt, double boundRadians)
+  const std::vector<int>& label, const SurfaceRefinementOptions& options)
 {
   SegmentPoints split;
   auto& pts = s.surface.points;
   const auto& tris = s.surface.triangles;
   // the spacing looks at the input's corners only, so the new points are
   // appended after every segment is measured
-  const SegmentSpacing spacing(pts, tris, label, size, sizeAt, boundRadians);
+  const SegmentSpacing spacing(pts, tris, label, options.size, options.sizeAt,
+    options.minimumAngleDegrees * kPi / 180.0, options.segmentSpacingFloor);
   std::vector<Vec3> added;
   for (std::size_t t = 0; t < tris.size(); ++t)
   {
@@ -661,10 +672,11 @@ SurfaceRefinementResult refineSubdomainSurface(
   SurfaceRefinementResult result;
   if (!(options.size > 0) || !std::isfinite(options.size) ||
     !(options.minimumAngleDegrees > 0 && options.minimumAngleDegrees <= 34) ||
-    !(options.coplanarToleranceDegrees >= 0 && options.coplanarToleranceDegrees <= 10))
+    !(options.coplanarToleranceDegrees >= 0 && options.coplanarToleranceDegrees <= 10) ||
+    !(options.segmentSpacingFloor >= 1.0 / 1024 && options.segmentSpacingFloor <= 1))
   {
-    result.error = "invalid options: the size must be positive, the minimum angle lie in (0, 34] degrees "
-                   "and the coplanar tolerance in [0, 10] degrees";
+    result.error = "invalid options: the size must be positive, the minimum angle lie in (0, 34] degrees, "
+                   "the coplanar tolerance in [0, 10] degrees and the segment spacing floor in [1/1024, 1]";
     return result;
   }
   result.minimumAngleBefore = outerMinimumAngle(surface);
@@ -673,8 +685,7 @@ SurfaceRefinementResult refineSubdomainSurface(
   const double volumeBefore = outerVolume(surface);
 
   SubdomainSurface refined = surface; // the work copy: the input stays intact for a fallback
-  const SegmentPoints split =
-    splitSegments(refined, across, label, options.size, options.sizeAt, options.minimumAngleDegrees * kPi / 180.0);
+  const SegmentPoints split = splitSegments(refined, across, label, options);
   const std::vector<Facet> facets = collectFacets(surface, across, label, split);
   result.facets = facets.size();
   result.segmentsSplit = split.size();

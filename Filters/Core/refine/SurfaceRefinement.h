@@ -34,6 +34,10 @@
 
 namespace ptm
 {
+// The default of SurfaceRefinementOptions::segmentSpacingFloor; the
+// measurements behind it are at SegmentSpacing in SurfaceRefinement.cpp.
+constexpr double kDefaultSegmentSpacingFloor = 1.0 / 8.0;
+
 struct SurfaceRefinementOptions
 {
   double size = 0.0;                 // target edge length, > 0 (with sizeAt: its upper bound)
@@ -41,6 +45,11 @@ struct SurfaceRefinementOptions
   // positive and below `size` it sets the local target instead
   SizeFunction sizeAt;
   double minimumAngleDegrees = 20.7; // quality bound of the facet meshes, (0, 34]
+  // The shortest spacing a segment is split at beside a poor facet, as a
+  // fraction of the local size, in [1/1024, 1]: lower follows thin input
+  // strips (chamfers, fillets of CAD exports) down to their width, as
+  // TetGen -q does, at the price of many more tetrahedra there.
+  double segmentSpacingFloor = kDefaultSegmentSpacingFloor;
   // 0 (default): a facet is exactly planar, and the surface keeps its
   // geometry. > 0: outer triangles whose normals lie within this angle of a
   // facet's first triangle join it, as TetGen -p merges nearly coplanar
