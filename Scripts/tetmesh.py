@@ -300,6 +300,20 @@ def recut_if_stages_fail(run, errors, times, cutter, stages, strategy, most_recu
             run("cut", cutter)
 
 
+def open_reader(path):
+    """ParaView's reader of `path`, or fail() saying why there is none."""
+    from paraview import simple
+    try:
+        reader = simple.OpenDataFile(path)
+    except RuntimeError as e:  # ParaView 5.11 raises where no reader can read the file
+        reader, why = None, str(e).strip()
+    else:
+        why = "no reader for it"
+    if reader is None:
+        fail("ParaView cannot read '%s' (%s)" % (path, why))
+    return reader
+
+
 def main(argv):
     args = parse_arguments(argv)
     if not os.path.isfile(args.input):
@@ -327,9 +341,7 @@ def main(argv):
             fail("%s failed: %s" % (stage, errors.messages[0]))
         return proxy
 
-    reader = simple.OpenDataFile(args.input)
-    if reader is None:
-        fail("ParaView has no reader for '%s'" % args.input)
+    reader = open_reader(args.input)
     if args.input.lower().endswith(CAD_EXTENSIONS) and "SolidIndex" in reader.ListProperties():
         reader.SolidIndex = args.solid
         reader.RelativeLinearDeflection = args.cad_deflection
@@ -347,9 +359,7 @@ def main(argv):
             MaximumVolumeChange=args.remesh_max_volume_change))
     size_source = None
     if args.size_source:
-        size_source = simple.OpenDataFile(args.size_source)
-        if size_source is None:
-            fail("ParaView has no reader for '%s'" % args.size_source)
+        size_source = open_reader(args.size_source)
         run("read size source", size_source)
     cutter = run("cut", simple.VolumeBalancedCutter(
         Input=surface, NumberOfSubdomains=args.subdomains, Strategy=args.strategy, Direction=args.direction,

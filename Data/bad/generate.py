@@ -90,6 +90,9 @@ def main():
     p, t = box([0, 0, 0], [1, 1, 1])
     write_stl("nan_coordinate.stl", p, t, {(3, t[3][1]): "nan 1 0"})
     open(os.path.join(HERE, "empty.stl"), "w").close()
+    # no reader takes an empty PLY (assimp's test models ship one,
+    # models/invalid/empty.ply): tetmesh.py must say so, not show a traceback
+    open(os.path.join(HERE, "empty.ply"), "w").close()
     # a tetrahedron whose edge (0,1) carries a point on one side only, closed
     # by a zero-area triangle: removing that triangle would open the surface
     write_off("zero_area_sliver.off",
