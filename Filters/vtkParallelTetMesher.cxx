@@ -605,7 +605,8 @@ std::string meshOwnedSubdomains(vtkParallelTetMesher* filter, const ptm::Complex
     const auto start = std::chrono::steady_clock::now();
     try
     {
-      const ptm::SubdomainSurface asCut = std::getenv("PTM_FAILED_SURFACE_DIR") ? owned.surfaces[k] : ptm::SubdomainSurface{};
+      const ptm::SubdomainSurface asCut =
+        std::getenv("PTM_FAILED_SURFACE_DIR") ? owned.surfaces[k] : ptm::SubdomainSurface{};
       MeshedSubdomain m = meshSubdomain(owned.surfaces[k], options, refinement, field);
       for (const std::string& w : m.warnings)
       {

@@ -198,7 +198,7 @@ using SegmentPoints = std::map<UndirectedEdge, std::vector<Index>>;
 // degrees, serial 4.44), but it made Prusa's ender3 bed 2.62 M tetrahedra
 // (serial 0.22 M) and lowered femur's minimum 0.19 -> 0.00 degrees and
 // rr-vc-300's 1.21 -> 0.01.
-// Session 26, Kicad's heat sink HS-125 (kicad-packages3d, tessellated by
+// Session 26, KiCad's heat sink HS-125 (kicad-packages3d, tessellated by
 // OCCT; the size 7.766, K = 1): 14,854 of its 104,920 boundary triangles
 // had angles of 5.2 degrees, strips 0.056 wide split at the floor, and
 // 24,052 of 289,318 tetrahedra (8.31 %) were under 10 degrees (serial
