@@ -5,6 +5,7 @@
 #
 #   bash Testing/Corpus/fetch.sh [OUT_DIR]            # default out/corpus
 #   bash Testing/Corpus/fetch.sh --unseen [OUT_DIR]   # default out/unseen
+#   bash Testing/Corpus/fetch.sh --fresh [OUT_DIR]    # default out/fresh
 #
 # --unseen builds a second set, for robustness runs (two of its surfaces,
 # netgen's part1 and Prusa's cylinder, became regression files in
@@ -13,6 +14,11 @@
 # freecad-common, openscad-testing-data, openscad-mcad). Those packages are
 # downloaded with apt-get download and unpacked under OUT_DIR/.work, not
 # installed.
+#
+# --fresh builds a third such set: larger CGAL meshes (libcgal-demo) and STEP
+# models of kicad-packages3d and calculix-cgx-examples, tessellated by the
+# plugin's CAD reader code (CADTessellation.cpp, compiled here against
+# Debian's OCCT, with the reader's defaults) as the sweeps read them.
 #
 # Writes OUT_DIR/NAME.off for every surface that is closed, edge- and
 # vertex-manifold, consistently oriented, encloses a positive volume and does
@@ -23,9 +29,9 @@
 set -euo pipefail
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 SET=main
-if [ "${1:-}" = "--unseen" ]; then SET=unseen; shift; fi
+case "${1:-}" in --unseen | --fresh) SET="${1#--}"; shift ;; esac
 DEFAULT_OUT=out/corpus
-[ "$SET" = unseen ] && DEFAULT_OUT=out/unseen
+[ "$SET" != main ] && DEFAULT_OUT="out/$SET"
 OUT="${1:-$DEFAULT_OUT}"
 mkdir -p "$OUT"
 OUT="$(cd "$OUT" && pwd)"
@@ -34,6 +40,7 @@ rm -rf "$WORK/raw" "$OUT/dirty" "$OUT"/*.off
 mkdir -p "$WORK/raw" "$WORK/lib" "$OUT/dirty"
 
 PACKAGES="openscad occt-draw occt-misc libcgal-demo libcgal-dev gmsh gmsh-doc g++ libgmp-dev libmpfr-dev python3-numpy unzip"
+[ "$SET" = fresh ] && PACKAGES="$PACKAGES libocct-data-exchange-dev libocct-modeling-algorithms-dev"
 missing=""
 for p in $PACKAGES; do dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"; done
 if [ -n "$missing" ]; then
@@ -174,7 +181,42 @@ oscadtest-linear_extrude|debscad|$OT/3D/features/linear_extrude-tests.scad|linea
 mcad-gear|debscadline|$MCAD gear(number_of_teeth=17, circular_pitch=500, bore_diameter=5, hub_diameter=15, rim_width=5, hub_thickness=10, rim_thickness=8, gear_thickness=4, circles=5);|involute gear with holes
 mcad-bevel|debscadline|$MCAD test_bevel_gear();|bevel gear
 "
+
+# The fresh set: kind cgal as above (data.tar.gz is libcgal-demo's), debcad
+# (PACKAGE:PATH, a STEP file read with the reader's defaults: all solids,
+# 1e-3 of the diagonal, 0.5 rad). Only the candidates that passed the check:
+# 13 more CGAL meshes and 9 models of assimp-testmodels are open,
+# non-manifold or self-intersecting.
+KI=kicad-packages3d:/usr/share/kicad/3dmodels
+FRESH="
+cgal2-armadillo|cgal|data/meshes/armadillo.off|scanned armadillo
+cgal2-dino|cgal|data/meshes/dino.off|dinosaur
+cgal2-homer|cgal|data/meshes/homer.off|cartoon figure
+cgal2-helmet|cgal|data/meshes/helmet.off|coarse helmet
+cgal2-blobby|cgal|data/meshes/blobby.off|smooth blob
+cgal2-anchor_dense|cgal|data/meshes/anchor_dense.off|CAD anchor, denser
+cgal2-refined_elephant|cgal|data/meshes/refined_elephant.off|organic, refined
+cgal2-fandisk_large|cgal|data/meshes/fandisk_large.off|CAD fan disk, denser
+cgal2-pinion_small|cgal|data/meshes/pinion_small.off|CAD pinion, coarser
+cgal2-rotor_small|cgal|data/meshes/rotor_small.off|CAD rotor, coarser
+cgal2-itemb|cgal|data/meshes/itemb.off|coarse CAD part
+cgal2-retinal|cgal|data/meshes/retinal.off|smooth closed surface
+cgal2-bunny00|cgal|data/meshes/bunny00.off|scanned bunny
+ccx-halter|debcad|calculix-cgx-examples:/usr/share/doc/calculix-cgx-examples/examples/cad/halter.stp|CAD bracket
+kicad-battery1058|debcad|$KI/Battery.3dshapes/BatteryHolder_Keystone_1058_1x2032.step|battery holder
+kicad-buzzer12|debcad|$KI/Buzzer_Beeper.3dshapes/Buzzer_12x9.5RM7.6.step|buzzer
+kicad-sma|debcad|$KI/Connector_Coaxial.3dshapes/SMA_Amphenol_132291_Vertical.step|SMA connector
+kicad-dsub9|debcad|$KI/Connector_Dsub.3dshapes/DSUB-9_Female_Horizontal_P2.77x2.84mm_EdgePinOffset9.40mm.step|D-sub connector
+kicad-jstxh2|debcad|$KI/Connector_JST.3dshapes/JST_XH_B2B-XH-A_1x02_P2.50mm_Vertical.step|JST connector
+kicad-usbA|debcad|$KI/Connector_USB.3dshapes/USB_A_TE_292303-7_Horizontal.step|USB-A connector
+kicad-hc49u|debcad|$KI/Crystal.3dshapes/Crystal_HC49-U_Vertical.step|crystal
+kicad-fuseholder|debcad|$KI/Fuse.3dshapes/Fuseholder_Cylinder-5x20mm_Bulgin_FX0456_Vertical_Closed.step|fuse holder
+kicad-heatsink125|debcad|$KI/Heatsink.3dshapes/Heatsink_125x35x50mm_3xFixationM3.step|heatsink, many fins
+kicad-heatsinkAAVID|debcad|$KI/Heatsink.3dshapes/Heatsink_AAVID_573300D00010G_TO-263.step|heatsink
+kicad-heatsinkHS132|debcad|$KI/Heatsink.3dshapes/Heatsink_Stonecold_HS-132_32x14mm_2xFixation1.5mm.step|heatsink
+"
 [ "$SET" = unseen ] && CANDIDATES="$UNSEEN"
+[ "$SET" = fresh ] && CANDIDATES="$FRESH"
 
 tar xzf "$CGAL_DATA" -C "$WORK" data/meshes
 export LD_LIBRARY_PATH="$WORK/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
@@ -202,22 +244,61 @@ scad_mesh() {  # name scad-file -> writes $WORK/raw/name.stl (openscad in the fi
     (cd "$(dirname "$2")" && timeout 300 openscad -o "$WORK/raw/$1.stl" "$2") >"$WORK/raw/$1.log" 2>&1
 }
 
-deb_root() {  # package -> prints the folder it is unpacked in (downloaded once, not installed)
-    local pkg="$1" dir="$WORK/deb/$1"
-    if [ ! -e "$dir/.unpacked" ]; then
+# package [file...] -> prints the folder it is unpacked in (downloaded once, not
+# installed); with files, only those: kicad-packages3d is 5 GB unpacked
+deb_root() {
+    local pkg="$1" dir="$WORK/deb/$1" deb f need=0
+    shift
+    [ -e "$dir/.unpacked" ] || need=1
+    [ $# = 0 ] && [ -s "$dir/.unpacked" ] && need=1  # unpacked in part before
+    for f in "$@"; do [ -e "$dir$f" ] || need=1; done
+    if [ $need = 1 ]; then
         rm -rf "$dir" && mkdir -p "$WORK/debs" "$dir"
-        (cd "$WORK/debs" && apt-get download "$pkg") >"$WORK/debs/$pkg.log" 2>&1 || return 1
-        dpkg-deb -x "$(ls "$WORK/debs/${pkg}_"*.deb | head -n 1)" "$dir" && touch "$dir/.unpacked"
+        ls "$WORK/debs/${pkg}_"*.deb >/dev/null 2>&1 \
+            || (cd "$WORK/debs" && apt-get download "$pkg") >"$WORK/debs/$pkg.log" 2>&1 || return 1
+        deb="$(ls "$WORK/debs/${pkg}_"*.deb | head -n 1)"
+        if [ $# = 0 ]; then dpkg-deb -x "$deb" "$dir" || return 1
+        else dpkg-deb --fsys-tarfile "$deb" | tar -x -C "$dir" "${@/#/.}" || return 1; fi
+        echo "$*" > "$dir/.unpacked"
     fi
     echo "$dir"
 }
+
+if [ "$SET" = fresh ]; then
+    # the plugin's CAD reader without ParaView: the same triangles, written exactly
+    cat > "$WORK/cad2off.cpp" <<'CPP'
+#include "CADTessellation.h"
+#include "OffFormat.h"
+#include <cstdio>
+#include <fstream>
+int main(int argc, char** argv)
+{
+  if (argc != 3) return std::fprintf(stderr, "usage: cad2off IN OUT.off\n"), 2;
+  const ptm::CADSurface r = ptm::readCADSurface(argv[1], ptm::CADReadOptions());
+  for (const std::string& w : r.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  if (!r.ok) return std::fprintf(stderr, "%s\n", r.error.c_str()), 1;
+  std::ofstream out(argv[2]);
+  ptm::writeOff(out, r.surface);
+  return out ? 0 : 1;
+}
+CPP
+    CORE="$HERE/../../Filters/Core"
+    g++ -O2 -std=c++17 -I"$CORE/common" -I"$CORE/input" -isystem /usr/include/opencascade -o "$WORK/cad2off" \
+        "$WORK/cad2off.cpp" "$CORE/input/CADTessellation.cpp" "$CORE/input/OffFormat.cpp" \
+        -lTKSTEP -lTKIGES -lTKXSBase -lTKMesh -lTKTopAlgo -lTKBRep -lTKG3d -lTKGeomBase -lTKMath -lTKernel
+    # one pass over each package's data for all its files
+    for pkg in $(sed -n 's/^[^|]*|debcad|\([^:]*\):.*/\1/p' <<<"$CANDIDATES" | sort -u); do
+        deb_root "$pkg" $(sed -n "s/^[^|]*|debcad|$pkg:\([^|]*\)|.*/\1/p" <<<"$CANDIDATES") >/dev/null || true
+    done
+fi
 
 tessellate() {  # name kind source -> prints the raw file, or fails
     local name="$1" kind="$2" src="$3" raw="$WORK/raw/$1.stl" root rest
     case "$kind" in
         deb*)
-            root="$(deb_root "${src%%:*}")" || return 1
-            rest="${src#*:}" ;;
+            rest="${src#*:}"
+            if [ "$kind" = debcad ]; then root="$(deb_root "${src%%:*}" "$rest")" || return 1
+            else root="$(deb_root "${src%%:*}")" || return 1; fi ;;
     esac
     case "$kind" in
         cgal) raw="$WORK/$src" ;;
@@ -230,6 +311,9 @@ tessellate() {  # name kind source -> prints the raw file, or fails
             (cd "$(dirname "$in")" && timeout 300 gmsh "$in" -2 -nt 1 -format stl -save_all -o "$raw") \
                 >"$WORK/raw/$name.log" 2>&1 ;;
         debstl) cp "$root$rest" "$raw" ;;
+        debcad)
+            raw="$WORK/raw/$name.off"
+            "$WORK/cad2off" "$root$rest" "$raw" >"$WORK/raw/$name.log" 2>&1 ;;
         debscad) scad_mesh "$name" "$root$rest" ;;
         debocct)
             case "$rest" in
