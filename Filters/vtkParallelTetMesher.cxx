@@ -576,10 +576,11 @@ std::string keepFailedSurface(const ptm::SubdomainSurface& surface, long long id
   {
     return "";
   }
-  const std::string path = std::string(dir) + "/subdomain-" + std::to_string(id) + ".off";
+  const std::string base = std::string(dir) + "/subdomain-" + std::to_string(id);
+  const std::string path = base + ".off";
   std::ofstream out(path);
   ptm::writeOff(out, surface.surface);
-  std::ofstream sides(std::string(dir) + "/subdomain-" + std::to_string(id) + ".sides");
+  std::ofstream sides(base + ".sides");
   for (const auto other : surface.otherSide)
   {
     sides << other << "\n";
@@ -686,7 +687,7 @@ std::string vtkParallelTetMesher::PropertyError()
     "CoplanarTolerance", "lie in [0, 10] degrees", this->CoplanarTolerance);
   checks.Require(this->BoundaryMinimumAngle > 0.0 && this->BoundaryMinimumAngle <= 34.0,
     "BoundaryMinimumAngle", "lie in (0, 34] degrees", this->BoundaryMinimumAngle);
-  checks.Require(this->BoundarySpacingFloor >= 1.0 / 1024 && this->BoundarySpacingFloor <= 1.0,
+  checks.Require(this->BoundarySpacingFloor >= ptm::kSmallestSegmentSpacingFloor && this->BoundarySpacingFloor <= 1.0,
     "BoundarySpacingFloor", "lie in [1/1024, 1] (a fraction of the local size)", this->BoundarySpacingFloor);
   return checks.Ok() ? "" : checks.Message();
 }

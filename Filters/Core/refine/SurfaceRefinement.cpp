@@ -673,7 +673,7 @@ SurfaceRefinementResult refineSubdomainSurface(
   if (!(options.size > 0) || !std::isfinite(options.size) ||
     !(options.minimumAngleDegrees > 0 && options.minimumAngleDegrees <= 34) ||
     !(options.coplanarToleranceDegrees >= 0 && options.coplanarToleranceDegrees <= 10) ||
-    !(options.segmentSpacingFloor >= 1.0 / 1024 && options.segmentSpacingFloor <= 1))
+    !(options.segmentSpacingFloor >= kSmallestSegmentSpacingFloor && options.segmentSpacingFloor <= 1))
   {
     result.error = "invalid options: the size must be positive, the minimum angle lie in (0, 34] degrees, "
                    "the coplanar tolerance in [0, 10] degrees and the segment spacing floor in [1/1024, 1]";

@@ -37,6 +37,8 @@ namespace ptm
 // The default of SurfaceRefinementOptions::segmentSpacingFloor; the
 // measurements behind it are at SegmentSpacing in SurfaceRefinement.cpp.
 constexpr double kDefaultSegmentSpacingFloor = 1.0 / 8.0;
+// The smallest floor accepted (the largest is 1, the whole local size).
+constexpr double kSmallestSegmentSpacingFloor = 1.0 / 1024;
 
 struct SurfaceRefinementOptions
 {
@@ -46,7 +48,7 @@ struct SurfaceRefinementOptions
   SizeFunction sizeAt;
   double minimumAngleDegrees = 20.7; // quality bound of the facet meshes, (0, 34]
   // The shortest spacing a segment is split at beside a poor facet, as a
-  // fraction of the local size, in [1/1024, 1]: lower follows thin input
+  // fraction of the local size, in [kSmallestSegmentSpacingFloor, 1]: lower follows thin input
   // strips (chamfers, fillets of CAD exports) down to their width, as
   // TetGen -q does, at the price of many more tetrahedra there.
   double segmentSpacingFloor = kDefaultSegmentSpacingFloor;
