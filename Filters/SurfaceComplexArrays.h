@@ -71,6 +71,7 @@ constexpr const char* WrapToInputDistance = "WrapToInputDistance"; // largest, w
 constexpr const char* InputToWrapDistance = "InputToWrapDistance"; // largest, input to wrap
 constexpr const char* WrapSampleSpacing = "WrapSampleSpacing";     // the distances are exact to within this
 constexpr const char* WrapSeconds = "WrapSeconds";                 // wrapping and measuring, on rank 0
+constexpr const char* WrapMeanThickness = "WrapMeanThickness";     // 2 x enclosed volume / area (AlphaWrap.h)
 
 // field data of vtkSurfaceRemesher's output (absolute lengths)
 constexpr const char* RemeshEdgeLength = "RemeshEdgeLength";           // the target edge length used

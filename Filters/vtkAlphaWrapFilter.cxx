@@ -63,11 +63,13 @@ int vtkAlphaWrapFilter::RequestData(
   stage.filterName = "AlphaWrap";
   stage.progressText = "Wrapping";
   stage.figureNames = { ptm::arrays::WrapAlpha, ptm::arrays::WrapOffset, ptm::arrays::WrapToInputDistance,
-    ptm::arrays::InputToWrapDistance, ptm::arrays::WrapSampleSpacing, ptm::arrays::WrapSeconds };
-  stage.properties = { this->RelativeAlpha, this->RelativeOffset };
+    ptm::arrays::InputToWrapDistance, ptm::arrays::WrapSampleSpacing, ptm::arrays::WrapSeconds,
+    ptm::arrays::WrapMeanThickness };
+  stage.properties = { this->RelativeAlpha, this->RelativeOffset, static_cast<double>(this->AllowSkin) };
   ptm::AlphaWrapOptions options;
   options.relativeAlpha = this->RelativeAlpha;
   options.relativeOffset = this->RelativeOffset;
+  options.allowSkin = this->AllowSkin != 0;
   stage.make = [options](const ptm::TriangleSurface& whole, const std::vector<long long>&)
   {
     ptm::AlphaWrapResult wrap = ptm::alphaWrapSurface(whole, options);
@@ -76,7 +78,7 @@ int vtkAlphaWrapFilter::RequestData(
     made.warnings = wrap.warnings;
     made.surface = std::move(wrap.surface);
     made.figures = { wrap.alpha, wrap.offset, wrap.wrapToInput, wrap.inputToWrap, wrap.sampleSpacing,
-      wrap.wrapSeconds + wrap.distanceSeconds };
+      wrap.wrapSeconds + wrap.distanceSeconds, wrap.meanThickness };
     return made;
   };
   return ptm::runWholeSurfaceStage(this, this->Controller, stage, *this->Cache, inputVector, outputVector);
@@ -87,5 +89,6 @@ void vtkAlphaWrapFilter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "RelativeAlpha: " << this->RelativeAlpha << "\n";
   os << indent << "RelativeOffset: " << this->RelativeOffset << "\n";
+  os << indent << "AllowSkin: " << this->AllowSkin << "\n";
   os << indent << "Controller: " << this->Controller << "\n";
 }

@@ -9,7 +9,9 @@
  * input, that does not enter gaps narrower than about RelativeAlpha x diagonal
  * (ptm::alphaWrapSurface). How far the wrap strays from the input is measured
  * in both directions and put in field data (WrapToInputDistance,
- * InputToWrapDistance), with the absolute WrapAlpha and WrapOffset used.
+ * InputToWrapDistance), with the absolute WrapAlpha and WrapOffset used and
+ * the wrap's WrapMeanThickness. A wrap that is a hollow skin around an open
+ * input is refused unless AllowSkin is on.
  *
  * Collective, as ptm::runWholeSurfaceStage runs it: rank 0 alone wraps
  * the whole surface and sends the wrap to the others, so the output does not
@@ -50,6 +52,15 @@ public:
   ///@}
 
   ///@{
+  /// Whether a wrap that is a hollow skin (an open input whose holes are
+  /// wider than alpha, wrapped from both sides; ptm::AlphaWrapOptions) is
+  /// output with a warning instead of refused (default off).
+  vtkSetMacro(AllowSkin, vtkTypeBool);
+  vtkGetMacro(AllowSkin, vtkTypeBool);
+  vtkBooleanMacro(AllowSkin, vtkTypeBool);
+  ///@}
+
+  ///@{
   /// The controller (default: the global one).
   void SetController(vtkMultiProcessController*);
   vtkGetObjectMacro(Controller, vtkMultiProcessController);
@@ -65,6 +76,7 @@ protected:
 
   double RelativeAlpha = 1.0 / 100.0;
   double RelativeOffset = 1.0 / 3000.0;
+  vtkTypeBool AllowSkin = 0;
   vtkMultiProcessController* Controller = nullptr;
 
 private:

@@ -3,7 +3,7 @@
     mpiexec -n N pvbatch Scripts/tetmesh.py INPUT -o OUT.pvtu [--subdomains K]
         [--size H] [--strategy RecursiveBisection|ParallelPlanes]
         [--direction Inertia|LongestExtent|X|Y|Z] [--json SUMMARY.json]
-        [--wrap [--wrap-alpha A] [--wrap-offset D]]
+        [--wrap [--wrap-alpha A] [--wrap-offset D] [--wrap-allow-skin]]
         [--remesh [--remesh-edge-length L] [--remesh-feature-angle DEG] [--remesh-max-deviation F]
                   [--remesh-max-volume-change F]]
         [--solid I] [--cad-deflection F]
@@ -98,6 +98,9 @@ def parse_arguments(argv):
                    help="--wrap: alpha, as a fraction of the bounding-box diagonal (default 0.01)")
     p.add_argument("--wrap-offset", type=float, default=1.0 / 3000,
                    help="--wrap: offset from the input, as a fraction of the diagonal (default 1/3000)")
+    p.add_argument("--wrap-allow-skin", action="store_true",
+                   help="--wrap: mesh a wrap that is a hollow skin (an open surface with holes wider than alpha, "
+                        "wrapped from both sides) as a thin solid, instead of failing")
     p.add_argument("--remesh", action="store_true",
                    help="remesh the surface first into triangles of about --remesh-edge-length (CGAL isotropic "
                         "remeshing, sharp edges kept): for CAD exports with long thin triangles; moves the surface "
@@ -351,7 +354,8 @@ def main(argv):
     wrapper = remesher = None
     if args.wrap:
         surface = wrapper = run("wrap", simple.AlphaWrap(Input=reader, RelativeAlpha=args.wrap_alpha,
-                                                         RelativeOffset=args.wrap_offset))
+                                                         RelativeOffset=args.wrap_offset,
+                                                         AllowSkin=1 if args.wrap_allow_skin else 0))
     if args.remesh:
         surface = remesher = run("remesh", simple.SurfaceRemesher(
             Input=surface, TargetEdgeLength=args.remesh_edge_length or max(args.size, 0.0),
@@ -376,7 +380,8 @@ def main(argv):
             ("alpha", "WrapAlpha"), ("offset", "WrapOffset"),
             ("largest_distance_wrap_to_input", "WrapToInputDistance"),
             ("largest_distance_input_to_wrap", "InputToWrapDistance"),
-            ("sample_spacing", "WrapSampleSpacing"), ("seconds", "WrapSeconds"))}
+            ("sample_spacing", "WrapSampleSpacing"), ("seconds", "WrapSeconds"),
+            ("mean_thickness", "WrapMeanThickness"))}
         wrap_report["triangles"] = int(wrapped.GetNumberOfPolys())
     if remesher is not None:
         remesh_report = {name: field_value(meshed, field) for name, field in (
@@ -476,10 +481,10 @@ def main(argv):
     if wrap_report is not None:
         summary["wrap"] = wrap_report
         print("tetmesh: wrapped (alpha %.4g, offset %.4g) into %d triangles; largest distance wrap to input "
-              "%.4g, input to wrap %.4g (sampled every %.3g)" % (
+              "%.4g, input to wrap %.4g (sampled every %.3g); mean thickness %.4g" % (
                   wrap_report["alpha"], wrap_report["offset"], wrap_report["triangles"],
                   wrap_report["largest_distance_wrap_to_input"], wrap_report["largest_distance_input_to_wrap"],
-                  wrap_report["sample_spacing"]))
+                  wrap_report["sample_spacing"], wrap_report["mean_thickness"]))
     if remesh_report is not None:
         summary["remesh"] = remesh_report
         print("tetmesh: remeshed at edge length %.4g into %d triangles (%d feature edges kept, %d corners); "

@@ -49,7 +49,7 @@ TEST(AlphaWrap, OverlappingSpheresBecomeOneClosedSurface)
   EXPECT_NEAR(accepted.enclosedVolume, union_, 0.03 * union_);
 }
 
-TEST(AlphaWrap, OpenBoxIsClosed)
+TEST(AlphaWrap, OpenBoxWithAWideHoleIsAHollowSkin)
 {
   TriangleSurface box = test::subdividedBox({ 0, 0, 0 }, { 1, 1, 1 }, 4);
   box.triangles.erase(box.triangles.begin(), box.triangles.begin() + 3);
@@ -63,16 +63,31 @@ TEST(AlphaWrap, OpenBoxIsClosed)
   AlphaWrapOptions options;
   options.relativeAlpha = 0.05;
   options.relativeOffset = 0.005;
+  // the missing triangles leave a hole of 0.25 x 0.25, wider than alpha: the
+  // wrap goes in through it and wraps the box's walls from both sides, a
+  // skin, which is refused by default, naming its thickness and the way out
+  const AlphaWrapResult refusedSkin = alphaWrapSurface(box, options);
+  ASSERT_FALSE(refusedSkin.ok);
+  EXPECT_NE(refusedSkin.error.find("hollow skin"), std::string::npos) << refusedSkin.error;
+  EXPECT_NE(refusedSkin.error.find("--wrap-alpha"), std::string::npos) << refusedSkin.error;
+  EXPECT_NE(refusedSkin.error.find("--wrap-allow-skin"), std::string::npos) << refusedSkin.error;
+  std::printf("open box skin: mean thickness %g = %.3f x the offset\n", refusedSkin.meanThickness,
+    refusedSkin.meanThickness / refusedSkin.offset);
+  EXPECT_GT(refusedSkin.meanThickness, 1.8 * refusedSkin.offset);
+  EXPECT_LT(refusedSkin.meanThickness, kSkinThicknessInOffsets * refusedSkin.offset);
+
+  options.allowSkin = true;
   const AlphaWrapResult wrap = alphaWrapSurface(box, options);
   ASSERT_TRUE(wrap.ok) << wrap.error;
+  ASSERT_EQ(wrap.warnings.size(), 1u);
+  EXPECT_NE(wrap.warnings[0].find("hollow skin"), std::string::npos) << wrap.warnings[0];
+  EXPECT_EQ(wrap.meanThickness, refusedSkin.meanThickness);
   std::printf("open box: %zu triangles, wrap %.2f s, distances %.2f s (%g, %g, spacing %g)\n",
     wrap.surface.triangles.size(), wrap.wrapSeconds, wrap.distanceSeconds, wrap.wrapToInput,
     wrap.inputToWrap, wrap.sampleSpacing);
   const PreparedSurface accepted = prepareInputSurface(wrap.surface, InputCheckOptions());
   ASSERT_TRUE(accepted.ok) << accepted.error;
-  // the missing triangles leave a hole of 0.25 x 0.25, wider than alpha: the
-  // wrap goes in through it and wraps the box's walls from both sides, so it
-  // encloses only the thin walls (2 x offset thick), far less than the box
+  // it encloses only the thin walls (2 x offset thick), far less than the box
   EXPECT_LT(accepted.enclosedVolume, 0.2);
 }
 
@@ -87,6 +102,10 @@ TEST(AlphaWrap, LargeAlphaClosesTheSameHole)
   const PreparedSurface accepted = prepareInputSurface(wrap.surface, InputCheckOptions());
   ASSERT_TRUE(accepted.ok) << accepted.error;
   EXPECT_NEAR(accepted.enclosedVolume, 1.0, 0.05);
+  EXPECT_TRUE(wrap.warnings.empty());
+  std::printf("closed box: mean thickness %g = %.1f x the offset\n", wrap.meanThickness,
+    wrap.meanThickness / wrap.offset);
+  EXPECT_GT(wrap.meanThickness, 10 * kSkinThicknessInOffsets * wrap.offset);
 }
 
 TEST(AlphaWrap, RefusesWhatCannotBeWrapped)

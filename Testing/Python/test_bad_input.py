@@ -2,7 +2,10 @@
 the whole pipeline (reader, VolumeBalancedCutter, InterfaceTriangulator,
 SurfaceRelaxer, ParallelTetMesher): refused inputs give, on every rank, an
 error naming the problem and empty outputs; repairable inputs are repaired
-with a warning and meshed. A hang fails the test by CTest's timeout.
+with a warning and meshed. The open box, wrapped (AlphaWrap) with an alpha
+narrower than its hole, is a hollow skin: refused on every rank by name,
+and with AllowSkin output with a warning. A hang fails the test by CTest's
+timeout.
 
     mpiexec -n N pvbatch --symmetric test_bad_input.py PLUGIN DATA_DIR N
 """
@@ -29,6 +32,35 @@ REPAIRED = {
     "flipped_triangles.off": "triangles flipped to agree with their neighbours",
     "duplicate_and_zero_area.off": "removed 2 duplicated triangles",
 }
+
+
+def check_skin_refused():
+    """AlphaWrap of the open box at the default alpha (0.017, the hole is a
+    half face): refused as a hollow skin on every rank, empty output; with
+    AllowSkin, a closed wrap about 2 x the offset thick, with a warning."""
+    reader = simple.OpenDataFile(os.path.join(t.DATA, "bad", "open_box.stl"))
+    wrap = simple.AlphaWrap(Input=reader)
+    catcher = t.ErrorCatcher(wrap.GetClientSideObject(), warnings=True)
+    wrap.UpdatePipeline()
+    assert "the wrap is a hollow skin, not a solid" in catcher.errors_text, \
+        "rank %d: AlphaWrap of the open box did not refuse the skin: %r" % (t.rank(), catcher.text)
+    assert wrap.GetClientSideObject().GetOutputDataObject(0).GetNumberOfCells() == 0
+    wrap.AllowSkin = 1
+    catcher = t.ErrorCatcher(wrap.GetClientSideObject(), warnings=True)
+    wrap.UpdatePipeline()
+    out = wrap.GetClientSideObject().GetOutputDataObject(0)
+    thickness = out.GetFieldData().GetArray("WrapMeanThickness").GetValue(0)
+    offset = out.GetFieldData().GetArray("WrapOffset").GetValue(0)
+    assert catcher.errors_text == "", "rank %d: %r" % (t.rank(), catcher.text)
+    # piece 0 of the request holds the whole wrap (WholeSurfaceStage.h)
+    assert t.all_ranks_sum(out.GetNumberOfCells()) > 0, "the allowed skin came out empty"
+    assert 1.8 * offset < thickness < 10 * offset, (thickness, offset)
+    if t.rank() == 0:
+        assert "hollow skin" in catcher.text, catcher.text
+        print("open_box.stl wrapped: a skin %.4g thick (%.2f x the offset), refused, and allowed with a warning"
+              % (thickness, thickness / offset))
+    for p in (wrap, reader):
+        simple.Delete(p)
 
 
 def pipeline(path):
@@ -82,6 +114,7 @@ def main():
             print("%-28s repaired and meshed: %d tetrahedra (%s)" % (name, tets, expected))
         for p in reversed(proxies):
             simple.Delete(p)
+    check_skin_refused()
 
 
 t.run_checks(main)

@@ -3,8 +3,10 @@
 #include "CgalSurfaceMesh.h"
 #include "SurfaceDistance.h"
 
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/alpha_wrap_3.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <exception>
@@ -49,6 +51,48 @@ Soup soupOf(const TriangleSurface& input, std::size_t& skipped)
   }
   return soup;
 }
+
+// Edges of exactly one face (by index): where the input is open.
+std::size_t borderEdgeCount(const std::vector<Face>& faces)
+{
+  std::vector<std::array<std::size_t, 2>> edges;
+  edges.reserve(3 * faces.size());
+  for (const Face& f : faces)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      edges.push_back({ std::min(f[k], f[(k + 1) % 3]), std::max(f[k], f[(k + 1) % 3]) });
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  std::size_t once = 0;
+  for (std::size_t i = 0; i < edges.size();)
+  {
+    std::size_t j = i + 1;
+    while (j < edges.size() && edges[j] == edges[i])
+    {
+      ++j;
+    }
+    once += j - i == 1 ? 1 : 0;
+    i = j;
+  }
+  return once;
+}
+
+// "" if the wrap is a solid (see kSkinThicknessInOffsets), else what to say.
+std::string skinMessage(const AlphaWrapResult& r)
+{
+  if (r.inputBorderEdges == 0 || !(r.meanThickness < kSkinThicknessInOffsets * r.offset))
+  {
+    return "";
+  }
+  std::ostringstream msg;
+  msg << "the wrap is a hollow skin, not a solid: its mean thickness (2 x enclosed volume / area) is "
+      << r.meanThickness << ", " << r.meanThickness / r.offset
+      << " x the offset, so it wraps the surface from both sides: it went in through a hole of the open input ("
+      << r.inputBorderEdges << " border edges) wider than alpha (" << r.alpha << ")";
+  return msg.str();
+}
 } // namespace
 
 AlphaWrapResult alphaWrapSurface(const TriangleSurface& input, const AlphaWrapOptions& options)
@@ -70,6 +114,7 @@ AlphaWrapResult alphaWrapSurface(const TriangleSurface& input, const AlphaWrapOp
   }
   Soup soup = soupOf(input, r.skippedTriangles);
   r.inputTriangles = soup.faces.size();
+  r.inputBorderEdges = borderEdgeCount(soup.faces);
   const double diagonal = boundingBoxDiagonal(input.points);
   if (soup.faces.empty() || !(diagonal > 0) || !(soup.area > 0))
   {
@@ -98,6 +143,19 @@ AlphaWrapResult alphaWrapSurface(const TriangleSurface& input, const AlphaWrapOp
     {
       r.error = "the alpha wrap came out empty";
       return r;
+    }
+    namespace PMP = CGAL::Polygon_mesh_processing;
+    r.meanThickness = 2.0 * PMP::volume(wrap) / PMP::area(wrap);
+    const std::string skin = skinMessage(r);
+    if (!skin.empty() && !options.allowSkin)
+    {
+      r.error = skin + ". Close the holes, or give an alpha wider than the widest hole (RelativeAlpha, "
+                       "--wrap-alpha), or allow the skin (AllowSkin, --wrap-allow-skin) to mesh it as a thin solid";
+      return r;
+    }
+    if (!skin.empty())
+    {
+      r.warnings.push_back(skin + " (allowed)");
     }
     r.surface = surfaceOfMesh(wrap);
 
