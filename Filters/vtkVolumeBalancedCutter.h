@@ -107,8 +107,9 @@ public:
   ///@}
 
   ///@{
-  /// After the cuts, take out the contour points that only mark where a plane
-  /// crossed an edge inside a planar face (default on; field data
+  /// After the cuts (with ParallelPlanes after every cut), take out the
+  /// contour points that only mark where a plane crossed an edge inside a
+  /// planar face (default on; field data
   /// FlatCrossingsRemoved). Off keeps every crossing, as before session 17.
   vtkSetMacro(RemoveFlatCrossings, vtkTypeBool);
   vtkGetMacro(RemoveFlatCrossings, vtkTypeBool);

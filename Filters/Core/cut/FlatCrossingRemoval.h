@@ -1,7 +1,9 @@
 #ifndef PTM_FLAT_CROSSING_REMOVAL_H
 #define PTM_FLAT_CROSSING_REMOVAL_H
 // Stage 1b: contour points that only mark where a plane crossed an edge
-// inside a planar face, taken out again after the cuts.
+// inside a planar face, taken out again after the cuts (with parallel
+// planes after every cut, so that they do not pile up on the next planes:
+// VolumeBalancedDecomposition.cpp, Cutting::cut).
 //
 // Why. CAD exports triangulate a planar face with long thin triangles (a
 // cylinder's wall as rectangles cut by one diagonal each). A plane crosses
