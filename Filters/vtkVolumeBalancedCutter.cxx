@@ -140,6 +140,7 @@ ptm::DecompositionOptions decompositionOptions(vtkVolumeBalancedCutter* f, int r
   options.balanceTolerance = f->GetBalanceTolerance();
   options.alignmentAngleDegrees = f->GetPlaneAlignmentAngle();
   options.tiltDegrees = f->GetPlaneTiltAngle();
+  options.minimumSlabThickness = f->GetMinimumSlabThickness();
   options.inputCheck.checkSelfIntersections = f->GetCheckSelfIntersections() != 0;
   options.removeFlatCrossings = f->GetRemoveFlatCrossings() != 0;
   options.inputCheck.selfIntersectionLimit = static_cast<std::size_t>(f->GetSelfIntersectionCheckLimit());
@@ -350,6 +351,8 @@ std::string vtkVolumeBalancedCutter::PropertyError()
     "PlaneAlignmentAngle", "lie in [0, 45] degrees", this->PlaneAlignmentAngle);
   checks.Require(this->PlaneTiltAngle >= 0 && this->PlaneTiltAngle <= 30,
     "PlaneTiltAngle", "lie in [0, 30] degrees", this->PlaneTiltAngle);
+  checks.Require(this->MinimumSlabThickness >= 0 && this->MinimumSlabThickness <= 1,
+    "MinimumSlabThickness", "lie in [0, 1] (a fraction of the mesh size)", this->MinimumSlabThickness);
   checks.Require(this->MaximumSize >= 0 && std::isfinite(this->MaximumSize), "MaximumSize",
     "be 0 (automatic) or a positive length", this->MaximumSize);
   checks.Require(this->SelfIntersectionCheckLimit >= 0, "SelfIntersectionCheckLimit",
@@ -436,7 +439,9 @@ int vtkVolumeBalancedCutter::RequestData(
   try
   {
     result = ptm::decomposeVolumeBalanced(std::move(prepared), options);
-    localError = result.ok ? "" : "the input surface cannot be meshed: " + result.error;
+    localError = result.ok                 ? ""
+      : result.refusedBeforeCutting ? "the cut is refused: " + result.error
+                                    : "the input surface cannot be meshed: " + result.error;
   }
   catch (const std::exception& e)
   {
@@ -516,6 +521,7 @@ void vtkVolumeBalancedCutter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BalanceTolerance: " << this->BalanceTolerance << "\n";
   os << indent << "PlaneAlignmentAngle: " << this->PlaneAlignmentAngle << "\n";
   os << indent << "PlaneTiltAngle: " << this->PlaneTiltAngle << "\n";
+  os << indent << "MinimumSlabThickness: " << this->MinimumSlabThickness << "\n";
   os << indent << "CheckSelfIntersections: " << this->CheckSelfIntersections << "\n";
   os << indent << "RemoveFlatCrossings: " << this->RemoveFlatCrossings << "\n";
   os << indent << "SizeByThickness: " << this->SizeByThickness << "\n";

@@ -107,6 +107,17 @@ public:
   ///@}
 
   ///@{
+  /// ParallelPlanes: refuse, before any cut, a K whose thinnest slab would be
+  /// thinner than this fraction of the mesh size (MaximumSize, or the input's
+  /// mean edge), naming the largest K that is not (default 0.25,
+  /// ptm::kMinimumSlabThickness; 0 never refuses). Thinner slabs are meshed
+  /// far finer than asked, with poor tetrahedra. Slabs under the size but
+  /// above this fraction are cut with a warning.
+  vtkSetMacro(MinimumSlabThickness, double);
+  vtkGetMacro(MinimumSlabThickness, double);
+  ///@}
+
+  ///@{
   /// After the cuts (with ParallelPlanes after every cut), take out the
   /// contour points that only mark where a plane crossed an edge inside a
   /// planar face (default on; field data
@@ -201,6 +212,7 @@ protected:
   double BalanceTolerance = 0.01;
   double PlaneAlignmentAngle = 15.0;
   double PlaneTiltAngle = 10.0;
+  double MinimumSlabThickness = 0.25;
   vtkTypeBool CheckSelfIntersections = 1;
   vtkTypeBool RemoveFlatCrossings = 1;
   vtkIdType SelfIntersectionCheckLimit = 2000000;

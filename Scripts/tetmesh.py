@@ -71,6 +71,10 @@ def parse_arguments(argv):
     p.add_argument("--keep-flat-crossings", action="store_true",
                    help="keep every contour point of the cuts, also those inside planar faces (default: they "
                    "are taken out, and the run is made again keeping them if TetGen fails)")
+    p.add_argument("--minimum-slab-thickness", type=float, default=None,
+                   help="ParallelPlanes: refuse before cutting a K whose thinnest slab is under this fraction of the "
+                   "size, naming the largest K that is not (default 0.25, the cutter's MinimumSlabThickness; 0: "
+                   "never refuse)")
     p.add_argument("--recut-attempts", type=int, default=4,
                    help="where a stage after the cut fails on a subdomain or an interface (one crossing itself, TetGen "
                    "failing on one), "
@@ -365,12 +369,14 @@ def main(argv):
     if args.size_source:
         size_source = open_reader(args.size_source)
         run("read size source", size_source)
+    # only when given: the default is the filter's own
+    slabs = {} if args.minimum_slab_thickness is None else {"MinimumSlabThickness": args.minimum_slab_thickness}
     cutter = run("cut", simple.VolumeBalancedCutter(
         Input=surface, NumberOfSubdomains=args.subdomains, Strategy=args.strategy, Direction=args.direction,
         BalanceCriterion=args.balance,
         SizeExpression=args.size_expression, SizeArray=args.size_array, SizeSource=size_source,
         MaximumSize=args.size, RemoveFlatCrossings=0 if args.keep_flat_crossings else 1,
-        SizeByThickness=0 if args.no_thickness_size else 1))
+        SizeByThickness=0 if args.no_thickness_size else 1, **slabs))
     # rank 0's copy of the surface the cutter took (every rank asked for the whole)
     meshed = surface.GetClientSideObject().GetOutputDataObject(0)
     wrap_report = remesh_report = None

@@ -189,7 +189,9 @@ def pipeline_run(surface, name, k, strategy, size, stats, args, plugin):
     if code is None:
         result.update(ok=False, error="timeout after %.0f s" % args.timeout)
     elif code != 0 or not os.path.isfile(out):
-        result.update(ok=False, error=last_error_line(text))
+        # refused up front (a K the part cannot hold at the size, with the
+        # largest K that can), as issue #18 allows: not a failure half-way
+        result.update(ok=False, error=last_error_line(text), refused=REFUSED_UP_FRONT in text)
     else:
         result["ok"] = True
         result["warnings"] = sorted(set(l.strip()[:300] for l in text.splitlines() if "Warning" in l
@@ -214,6 +216,10 @@ def pipeline_run(surface, name, k, strategy, size, stats, args, plugin):
                 p = os.path.join(rundir, f)
                 shutil.rmtree(p) if os.path.isdir(p) else os.remove(p)
     return result
+
+
+# The words of the cutter's refusal of parallel slabs under MinimumSlabThickness.
+REFUSED_UP_FRONT = "refused before cutting"
 
 
 def classify(error):
@@ -254,8 +260,9 @@ def row(r, serial):
     c = r.get("conformity", {})
     q = r.get("quality", {})
     if not r["ok"]:
-        return "| %s | %d | %s | **fail** | - | - | - | - | - | %.1f | %s |" % (
-            r["surface"], r["k"], r["strategy"], r["seconds"], r["error"].replace("|", "/"))
+        return "| %s | %d | %s | %s | - | - | - | - | - | %.1f | %s |" % (
+            r["surface"], r["k"], r["strategy"], "refused" if r.get("refused") else "**fail**", r["seconds"],
+            r["error"].replace("|", "/"))
     return "| %s | %d | %s | ok | %s | %s | %s | %s | %s | %.1f | %s |" % (
         r["surface"], r["k"], r["strategy"], "yes" if c.get("conforming") else "**no**",
         fmt(q.get("tetrahedra"), "%d"), fmt(c.get("volume_error"), "%.1e"),
@@ -316,6 +323,13 @@ def summarize(results, serial, names, exact=True, mode="nearly coplanar input tr
         lines.append("Mode: %s; the volume goal "
                      "(1e-9) is for the default mode only, so \"goals met\" here counts success, conformity "
                      "and quality, and the volume error column shows what the mode changed." % mode)
+    refused = [r for r in results if r.get("refused")]
+    if refused:
+        lines.append("Refused up front, before any cut, with the largest K the part can hold at the size "
+                     "(MinimumSlabThickness; not counted below): %d of %d runs: %s." % (
+                         len(refused), len(results), "; ".join(
+                             "%s K=%d %s" % (r["surface"], r["k"], r["strategy"]) for r in refused)))
+        results = [r for r in results if not r.get("refused")]
     runs = len(results)
     ok = [r for r in results if r["ok"]]
     conform = [r for r in ok if r.get("conformity", {}).get("conforming")]

@@ -252,6 +252,40 @@ TEST(VolumeBalancedDecomposition, ParallelSlabsThinnerThanTheSizeWarnWithTheLarg
   EXPECT_TRUE(thinSlabWarnings(decomposeVolumeBalanced(bar, options)).empty());
 }
 
+TEST(VolumeBalancedDecomposition, ParallelSlabsUnderTheMinimumThicknessAreRefusedWithTheLargestKThatIsNot)
+{
+  // the 4 x 1 x 1 bar at size 0.5: K = 40 makes slabs 0.1 thick, 0.2 x the
+  // size, under the default quarter; 32 slabs are 0.125 = a quarter thick
+  const TriangleSurface bar = subdividedBox({ 0, 0, 0 }, { 4, 1, 1 }, 4);
+  DecompositionOptions options;
+  options.strategy = CutStrategy::ParallelPlanes;
+  options.direction = CutDirection::X;
+  options.numberOfSubdomains = 40;
+  options.costMaximumSize = 0.5;
+  ASSERT_EQ(options.minimumSlabThickness, kMinimumSlabThickness);
+  const DecompositionResult refused = decomposeVolumeBalanced(bar, options);
+  ASSERT_FALSE(refused.ok);
+  EXPECT_TRUE(refused.refusedBeforeCutting);
+  EXPECT_NE(refused.error.find("slabs as thin as 0.1, 0.2 x the mesh size 0.5"), std::string::npos) << refused.error;
+  EXPECT_NE(refused.error.find("refused before cutting"), std::string::npos) << refused.error;
+  EXPECT_NE(refused.error.find("At most 32 parallel slabs are 0.25 x the size thick (8 as thick as the size)"),
+    std::string::npos)
+    << refused.error;
+  options.numberOfSubdomains = 32; // as thin as allowed: cut, with the warning
+  const DecompositionResult quarter = decomposeVolumeBalanced(bar, options);
+  ASSERT_TRUE(quarter.ok) << quarter.error;
+  EXPECT_EQ(quarter.subdomainVolume.size(), 32u);
+  options.numberOfSubdomains = 40;
+  options.minimumSlabThickness = 0; // never refuses
+  const DecompositionResult anyway = decomposeVolumeBalanced(bar, options);
+  ASSERT_TRUE(anyway.ok) << anyway.error;
+  EXPECT_EQ(anyway.subdomainVolume.size(), 40u);
+  ASSERT_FALSE(anyway.warnings.empty());
+  options.minimumSlabThickness = kMinimumSlabThickness;
+  options.strategy = CutStrategy::RecursiveBisection; // parts are not slabs
+  EXPECT_TRUE(decomposeVolumeBalanced(bar, options).ok);
+}
+
 // Parallel planes across long thin wall triangles (FlatCrossingRemoval.h):
 // each plane crossed the diagonals the earlier cuts left in the walls nearer
 // a wall's edge than the last, down to points 0.001 of the wall's width
@@ -270,6 +304,7 @@ TEST(VolumeBalancedDecomposition, PlanesThroughLongWallTrianglesLeaveNoNeedlePoi
     options.numberOfSubdomains = K;
     options.strategy = CutStrategy::ParallelPlanes;
     options.direction = CutDirection::Z;
+    options.minimumSlabThickness = 0; // the cut is tested, not the size policy
     const DecompositionResult r = decomposeVolumeBalanced(prism, options);
     ASSERT_TRUE(r.ok) << r.error;
     const SurfaceComplex& c = r.complex;
@@ -357,6 +392,7 @@ TEST(VolumeBalancedDecomposition, ParallelPlanesTakeTheFlatCrossingsOutAfterEver
   options.numberOfSubdomains = 32;
   options.strategy = CutStrategy::ParallelPlanes;
   options.direction = CutDirection::Z;
+  options.minimumSlabThickness = 0; // the cut is tested, not the size policy
   const DecompositionResult removed = decomposeVolumeBalanced(prism, options);
   options.removeFlatCrossings = false;
   const DecompositionResult kept = decomposeVolumeBalanced(prism, options);
@@ -616,6 +652,7 @@ TEST(VolumeBalancedDecomposition, CoarseTripleTorusNeverCrossesItself)
       DecompositionOptions options;
       options.numberOfSubdomains = K;
       options.strategy = strategy;
+      options.minimumSlabThickness = 0; // the cut is tested, not the size policy
       const DecompositionResult r = decomposeVolumeBalanced(file.data.surface, options);
       ASSERT_TRUE(r.ok) << label.str() << ": " << r.error;
       EXPECT_LE(r.maximumImbalance, options.balanceTolerance) << label.str();
@@ -743,6 +780,7 @@ TEST(VolumeBalancedDecompositionShared, TwoProcessesGiveTheOneProcessResult)
     DecompositionOptions options;
     options.numberOfSubdomains = 12;
     options.strategy = strategy;
+    options.minimumSlabThickness = 0; // the cut is tested, not the size policy
     const DecompositionResult one = decomposeVolumeBalanced(file.data.surface, options);
     ASSERT_TRUE(one.ok) << one.error;
     SharedRun two[2];

@@ -4,8 +4,10 @@ SurfaceRelaxer, ParallelTetMesher): refused inputs give, on every rank, an
 error naming the problem and empty outputs; repairable inputs are repaired
 with a warning and meshed. The open box, wrapped (AlphaWrap) with an alpha
 narrower than its hole, is a hollow skin: refused on every rank by name,
-and with AllowSkin output with a warning. A hang fails the test by CTest's
-timeout.
+and with AllowSkin output with a warning. The ball cut in parallel slabs
+under a quarter of the size thick is refused before any cut, on every rank,
+with the largest K that is not, and cut with MinimumSlabThickness 0. A hang
+fails the test by CTest's timeout.
 
     mpiexec -n N pvbatch --symmetric test_bad_input.py PLUGIN DATA_DIR N
 """
@@ -63,6 +65,40 @@ def check_skin_refused():
         simple.Delete(p)
 
 
+def check_thin_slabs_refused():
+    """The unit ball in 16 parallel slabs at size 0.5: the middle slabs are
+    about 0.08 thick, 0.17 x the size, under MinimumSlabThickness (0.25):
+    the whole pipeline refuses before cutting, on every rank, naming the
+    largest K whose slabs are thick enough; with 0 the cutter cuts them,
+    warning."""
+    proxies = pipeline(os.path.join(t.DATA, "ball.off"))
+    cutter = proxies[1]
+    cutter.Strategy = "ParallelPlanes"
+    cutter.NumberOfSubdomains = 16
+    cutter.MaximumSize = 0.5
+    catchers = [t.ErrorCatcher(p.GetClientSideObject(), warnings=True) for p in proxies]
+    proxies[-1].UpdatePipeline()
+    errors = "\n".join(c.errors_text for c in catchers)
+    for words in ("the cut is refused: ParallelPlanes with 16 subdomains cuts slabs as thin as",
+                  "refused before cutting",
+                  "Use at most "):
+        assert words in errors, "rank %d: the thin slabs were not refused with %r: %r" % (t.rank(), words, errors)
+    largest = int(errors.split("Use at most ")[1].split()[0])
+    assert 1 <= largest < 16, errors
+    assert t.all_ranks_sum(proxies[-1].GetClientSideObject().GetOutputDataObject(0).GetNumberOfCells()) == 0
+    cutter.MinimumSlabThickness = 0
+    catcher = t.ErrorCatcher(cutter.GetClientSideObject(), warnings=True)
+    cutter.UpdatePipeline()
+    assert catcher.errors_text == "", "rank %d: %r" % (t.rank(), catcher.text)
+    cut = cutter.GetClientSideObject().GetOutputDataObject(0)
+    assert t.all_ranks_sum(cut.GetNumberOfCells()) > 0, "the thin slabs allowed came out empty"
+    if t.rank() == 0:
+        assert "slabs as thin as" in catcher.text, catcher.text
+        print("ball.off in 16 slabs at size 0.5: refused (at most %d), cut with MinimumSlabThickness 0" % largest)
+    for p in reversed(proxies):
+        simple.Delete(p)
+
+
 def pipeline(path):
     reader = simple.OpenDataFile(path)
     cutter = simple.VolumeBalancedCutter(Input=reader, NumberOfSubdomains=2)
@@ -115,6 +151,7 @@ def main():
         for p in reversed(proxies):
             simple.Delete(p)
     check_skin_refused()
+    check_thin_slabs_refused()
 
 
 t.run_checks(main)

@@ -1252,9 +1252,11 @@ bool Cutting::cut(int cell, const Vec3& proposedNormal, double fraction, int par
 // triangles: CGAL's oblong at K = 64 (0.22 x) made 17 x serial TetGen's
 // tetrahedra, and CGAL's pinion at K = 48 (0.30 x; 1.03 M interface
 // triangles) failed after 332 s on a slab TetGen could not mesh in any input
-// order. Thickness alone does not decide that (OpenSCAD example005 at 0.08 x
-// meshes), so it warns, with the largest K whose slabs are as thick as the
-// size, before any cut.
+// order. Thickness alone does not decide whether TetGen fails (OpenSCAD
+// example005 at 0.08 x meshes), but the mesh grows and worsens as slabs thin
+// (kMinimumSlabThickness), so before any cut it warns of slabs under the size
+// and refuses slabs under options.minimumSlabThickness x the size, each with
+// the largest K whose slabs are thick enough.
 
 // The thinnest of the K equal-measure slabs of the whole object along
 // `normal`: the offsets that split its measure in K.
@@ -1272,32 +1274,59 @@ double thinnestSlab(const SurfaceComplex& c, const Vec3& normal, BalanceCriterio
   return thinnest;
 }
 
-void warnOfThinSlabs(const SurfaceComplex& c, const Vec3& normal, const DecompositionOptions& options,
-  DecompositionResult& result)
+// The largest number of slabs, at most K - 1, whose thinnest is at least
+// `thickness` (1 if none is): slabs thin about as 1 / K, so from that
+// estimate down, one or two steps.
+int largestSlabCount(const SurfaceComplex& c, const Vec3& normal, BalanceCriterion criterion, int K,
+  double thinnest, double thickness)
+{
+  const double enough = (1 - 1e-9) * thickness; // the offsets are found to a tolerance
+  int largest = std::min(K - 1, static_cast<int>(std::ceil(K * thinnest / thickness)));
+  while (largest > 1 && thinnestSlab(c, normal, criterion, largest) < enough)
+  {
+    --largest;
+  }
+  return std::max(largest, 1);
+}
+
+// Before any cut: a warning for slabs thinner than the size, a refusal (false
+// with `error`) for slabs under options.minimumSlabThickness x the size.
+bool checkSlabThickness(const SurfaceComplex& c, const Vec3& normal, const DecompositionOptions& options,
+  DecompositionResult& result, std::string& error)
 {
   const int K = options.numberOfSubdomains;
   const double size = largestMeshSize(options, result);
   const BalanceCriterion criterion = options.criterion; // HalfSpaceMeasure takes PredictedCost as Volume
   const double thinnest = thinnestSlab(c, normal, criterion, K);
-  const double thickEnough = (1 - 1e-9) * size; // the offsets are found to a tolerance
-  if (!(size > 0) || thinnest >= thickEnough)
+  if (!(size > 0) || thinnest >= (1 - 1e-9) * size)
   {
-    return;
+    return true;
   }
-  // slabs thin about as 1 / K: from that estimate down, one or two steps
-  int largest = std::min(K - 1, static_cast<int>(std::ceil(K * thinnest / size)));
-  while (largest > 1 && thinnestSlab(c, normal, criterion, largest) < thickEnough)
-  {
-    --largest;
-  }
+  const int thickEnough = largestSlabCount(c, normal, criterion, K, thinnest, size);
   std::ostringstream msg;
   msg.precision(3);
   msg << "ParallelPlanes with " << K << " subdomains cuts slabs as thin as " << thinnest << ", " << thinnest / size
-      << " x the mesh size " << size
-      << ": they are meshed finer than the size asks, with poorer tetrahedra next to the interfaces, and TetGen "
+      << " x the mesh size " << size;
+  const double floor = options.minimumSlabThickness * size;
+  if (options.minimumSlabThickness > 0 && thinnest < (1 - 1e-9) * floor)
+  {
+    const int largest = largestSlabCount(c, normal, criterion, K, thinnest, floor);
+    msg << ", under MinimumSlabThickness " << options.minimumSlabThickness
+        << " x the size: refused before cutting. Such slabs are meshed far finer than the size asks, with poor "
+           "tetrahedra between their two interfaces, and TetGen may fail on them. At most "
+        << largest << " parallel slabs are " << options.minimumSlabThickness << " x the size thick (" << thickEnough
+        << " as thick as the size). Use at most " << largest
+        << " subdomains, RecursiveBisection (thicker parts), a smaller size, or MinimumSlabThickness 0 "
+           "(tetmesh.py --minimum-slab-thickness 0) to cut them anyway";
+    error = msg.str();
+    result.refusedBeforeCutting = true;
+    return false;
+  }
+  msg << ": they are meshed finer than the size asks, with poorer tetrahedra next to the interfaces, and TetGen "
          "may fail on them; at most "
-      << std::max(largest, 1) << " parallel slabs are as thick as the size (RecursiveBisection makes thicker parts)";
+      << thickEnough << " parallel slabs are as thick as the size (RecursiveBisection makes thicker parts)";
   result.warnings.push_back(msg.str());
+  return true;
 }
 /// @}
 
@@ -1306,7 +1335,10 @@ void warnOfThinSlabs(const SurfaceComplex& c, const Vec3& normal, const Decompos
 bool Cutting::parallelPlanes(int K)
 {
   const Vec3 normal = cutNormal(c.points, cellPoints(c, 0), options.direction);
-  warnOfThinSlabs(c, normal, options, result);
+  if (!checkSlabThickness(c, normal, options, result, error))
+  {
+    return false;
+  }
   int rest = 0;
   for (int i = 0; i < K - 1; ++i)
   {

@@ -31,6 +31,19 @@ enum class CutStrategy
   RecursiveBisection
 };
 
+// The default of DecompositionOptions::minimumSlabThickness, a fraction of
+// the mesh size. Slabs thinner than the size lie between two interfaces that
+// cross the same input triangles, and fill with small, flat tetrahedra. On
+// the fresh set (session 28, 2 ranks, the sweep's sizes, ParallelPlanes at
+// K = 8, 16, 32, 64; Testing/Corpus/results/sweep-thin-slabs-session28.md),
+// from K = 32 to 64: CGAL's pinion (thinnest slab 0.45 -> 0.22 x the size)
+// 310 k -> 524 k tetrahedra, 3.9 -> 9.2 % under 10 degrees; KiCad's JST XH
+// (0.33 -> 0.17 x) 130 k -> 248 k, 2.4 -> 5.6 %. Above a quarter the share
+// grows too (JST XH at K = 16 -> 32, 0.67 -> 0.33 x: 1.3 -> 2.4 %), but the
+// blow-ups in tetrahedra and time are below it; a quarter is also the
+// floor of the contour split beside thin pieces (kThinPieceSpacingFraction).
+constexpr double kMinimumSlabThickness = 0.25;
+
 struct DecompositionOptions
 {
   int numberOfSubdomains = 2;
@@ -81,6 +94,12 @@ struct DecompositionOptions
   // never taken out (FlatCrossingRemoval.h), so every piece keeps its face.
   // Empty: one face.
   std::vector<Index> faceGroups;
+  // ParallelPlanes refuses, before any cut, a K whose thinnest slab would be
+  // thinner than this fraction of the mesh size (costMaximumSize, or the
+  // input's mean edge), naming the largest K that is not; 0 never refuses.
+  // Slabs under the size but above this fraction are cut with a warning.
+  // See kMinimumSlabThickness.
+  double minimumSlabThickness = kMinimumSlabThickness;
 };
 
 // What a process gives maxOverProcesses when its check threw.
@@ -90,6 +109,9 @@ struct DecompositionResult
 {
   bool ok = false;
   std::string error;
+  // true when the options were refused before any cut, the surface being
+  // fine (slabs under minimumSlabThickness)
+  bool refusedBeforeCutting = false;
   std::vector<std::string> warnings;
   SurfaceComplex complex;
   InputCheckCounts inputCheck;
