@@ -219,6 +219,9 @@ DecompositionOptions stageCaseOptions(int K, CutStrategy strategy)
   options.numberOfSubdomains = K;
   options.strategy = strategy;
   options.direction = strategy == CutStrategy::ParallelPlanes ? CutDirection::LongestExtent : CutDirection::Inertia;
+  // the stages are tested, not the size policy: the coarse test surfaces'
+  // slabs are under a quarter of their mean edge
+  options.minimumSlabThickness = 0;
   return options;
 }
 

@@ -40,7 +40,7 @@ std::vector<NamedSurface> namedTestSurfaces();
 
 // The decomposition of a stage test case: K subdomains, cut directions
 // along the longest extent for parallel planes and the inertia axes for
-// recursive bisection.
+// recursive bisection; thin slabs are cut, not refused.
 DecompositionOptions stageCaseOptions(int K, CutStrategy strategy);
 
 // A file of Data/ (path relative to it) cut into K subdomains by recursive

@@ -1307,6 +1307,10 @@ bool checkSlabThickness(const SurfaceComplex& c, const Vec3& normal, const Decom
   msg.precision(3);
   msg << "ParallelPlanes with " << K << " subdomains cuts slabs as thin as " << thinnest << ", " << thinnest / size
       << " x the mesh size " << size;
+  if (!(options.costMaximumSize > 0))
+  {
+    msg << " (the input's mean edge: MaximumSize, tetmesh.py --size, is 0; set it to the size you mesh at)";
+  }
   const double floor = options.minimumSlabThickness * size;
   if (options.minimumSlabThickness > 0 && thinnest < (1 - 1e-9) * floor)
   {
