@@ -219,15 +219,30 @@ TEST(VolumeBalancedDecomposition, UnitCubeCutExactlyThroughVerticesAndEdges)
   expectClosedSubdomains(rb.complex, "cube8");
 }
 
-TEST(VolumeBalancedDecomposition, ParallelSlabsThinnerThanTheSizeWarnWithTheLargestThickEnoughK)
+namespace
 {
-  // a 4 x 1 x 1 box in slabs along x: K = 10 makes slabs 0.4 thick
-  const TriangleSurface bar = subdividedBox({ 0, 0, 0 }, { 4, 1, 1 }, 4);
+// The 4 x 1 x 1 bar of the slab tests, and K parallel slabs along x at size 0.5.
+TriangleSurface slabBar()
+{
+  return subdividedBox({ 0, 0, 0 }, { 4, 1, 1 }, 4);
+}
+
+DecompositionOptions barSlabs(int K)
+{
   DecompositionOptions options;
   options.strategy = CutStrategy::ParallelPlanes;
   options.direction = CutDirection::X;
-  options.numberOfSubdomains = 10;
+  options.numberOfSubdomains = K;
   options.costMaximumSize = 0.5;
+  return options;
+}
+} // namespace
+
+TEST(VolumeBalancedDecomposition, ParallelSlabsThinnerThanTheSizeWarnWithTheLargestThickEnoughK)
+{
+  // K = 10 makes slabs 0.4 thick
+  const TriangleSurface bar = slabBar();
+  DecompositionOptions options = barSlabs(10);
   auto thinSlabWarnings = [](const DecompositionResult& r) {
     std::vector<std::string> found;
     for (const std::string& w : r.warnings)
@@ -254,14 +269,10 @@ TEST(VolumeBalancedDecomposition, ParallelSlabsThinnerThanTheSizeWarnWithTheLarg
 
 TEST(VolumeBalancedDecomposition, ParallelSlabsUnderTheMinimumThicknessAreRefusedWithTheLargestKThatIsNot)
 {
-  // the 4 x 1 x 1 bar at size 0.5: K = 40 makes slabs 0.1 thick, 0.2 x the
-  // size, under the default quarter; 32 slabs are 0.125 = a quarter thick
-  const TriangleSurface bar = subdividedBox({ 0, 0, 0 }, { 4, 1, 1 }, 4);
-  DecompositionOptions options;
-  options.strategy = CutStrategy::ParallelPlanes;
-  options.direction = CutDirection::X;
-  options.numberOfSubdomains = 40;
-  options.costMaximumSize = 0.5;
+  // K = 40 makes slabs 0.1 thick, 0.2 x the size, under the default
+  // quarter; 32 slabs are 0.125 = a quarter thick
+  const TriangleSurface bar = slabBar();
+  DecompositionOptions options = barSlabs(40);
   ASSERT_EQ(options.minimumSlabThickness, kMinimumSlabThickness);
   const DecompositionResult refused = decomposeVolumeBalanced(bar, options);
   ASSERT_FALSE(refused.ok);
