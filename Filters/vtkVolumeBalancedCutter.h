@@ -112,7 +112,8 @@ public:
   /// mean edge), naming the largest K that is not (default 0.25,
   /// ptm::kMinimumSlabThickness; 0 never refuses). Thinner slabs are meshed
   /// far finer than asked, with poor tetrahedra. Slabs under the size but
-  /// above this fraction are cut with a warning.
+  /// above this fraction are cut with a warning, and with a size field all
+  /// of them are.
   vtkSetMacro(MinimumSlabThickness, double);
   vtkGetMacro(MinimumSlabThickness, double);
   ///@}

@@ -293,6 +293,11 @@ TEST(VolumeBalancedDecomposition, ParallelSlabsUnderTheMinimumThicknessAreRefuse
   EXPECT_EQ(anyway.subdomainVolume.size(), 40u);
   ASSERT_FALSE(anyway.warnings.empty());
   options.minimumSlabThickness = kMinimumSlabThickness;
+  options.costSize = [](const Vec3&) { return 0.05; }; // a size field: warned, not refused
+  const DecompositionResult field = decomposeVolumeBalanced(bar, options);
+  ASSERT_TRUE(field.ok) << field.error;
+  EXPECT_FALSE(field.warnings.empty());
+  options.costSize = nullptr;
   options.strategy = CutStrategy::RecursiveBisection; // parts are not slabs
   EXPECT_TRUE(decomposeVolumeBalanced(bar, options).ok);
 }

@@ -1311,8 +1311,10 @@ bool checkSlabThickness(const SurfaceComplex& c, const Vec3& normal, const Decom
   {
     msg << " (the input's mean edge: MaximumSize, tetmesh.py --size, is 0; set it to the size you mesh at)";
   }
+  // a size field may ask for much less than its cap `size` in the slabs, so
+  // with one the slabs are only warned of
   const double floor = options.minimumSlabThickness * size;
-  if (options.minimumSlabThickness > 0 && thinnest < (1 - 1e-9) * floor)
+  if (options.minimumSlabThickness > 0 && !options.costSize && thinnest < (1 - 1e-9) * floor)
   {
     const int largest = largestSlabCount(c, normal, criterion, K, thinnest, floor);
     msg << ", under MinimumSlabThickness " << options.minimumSlabThickness

@@ -100,8 +100,9 @@ struct DecompositionOptions
   // ParallelPlanes refuses, before any cut, a K whose thinnest slab would be
   // thinner than this fraction of the mesh size (costMaximumSize, or the
   // input's mean edge), naming the largest K that is not; 0 never refuses.
-  // Slabs under the size but above this fraction are cut with a warning.
-  // See kMinimumSlabThickness.
+  // Slabs under the size but above this fraction are cut with a warning, and
+  // so are all slabs under the size with a size field (costSize), which may
+  // ask for much less than its cap there. See kMinimumSlabThickness.
   double minimumSlabThickness = kMinimumSlabThickness;
 };
 
