@@ -1274,15 +1274,21 @@ double thinnestSlab(const SurfaceComplex& c, const Vec3& normal, BalanceCriterio
   return thinnest;
 }
 
+// Whether a slab `slab` thick is at least `thickness`: the offsets are found
+// to a tolerance.
+bool atLeast(double slab, double thickness)
+{
+  return slab >= (1 - 1e-9) * thickness;
+}
+
 // The largest number of slabs, at most K - 1, whose thinnest is at least
 // `thickness` (1 if none is): slabs thin about as 1 / K, so from that
 // estimate down, one or two steps.
 int largestSlabCount(const SurfaceComplex& c, const Vec3& normal, BalanceCriterion criterion, int K,
   double thinnest, double thickness)
 {
-  const double enough = (1 - 1e-9) * thickness; // the offsets are found to a tolerance
   int largest = std::min(K - 1, static_cast<int>(std::ceil(K * thinnest / thickness)));
-  while (largest > 1 && thinnestSlab(c, normal, criterion, largest) < enough)
+  while (largest > 1 && !atLeast(thinnestSlab(c, normal, criterion, largest), thickness))
   {
     --largest;
   }
@@ -1298,7 +1304,7 @@ bool checkSlabThickness(const SurfaceComplex& c, const Vec3& normal, const Decom
   const double size = largestMeshSize(options, result);
   const BalanceCriterion criterion = options.criterion; // HalfSpaceMeasure takes PredictedCost as Volume
   const double thinnest = thinnestSlab(c, normal, criterion, K);
-  if (!(size > 0) || thinnest >= (1 - 1e-9) * size)
+  if (!(size > 0) || atLeast(thinnest, size))
   {
     return true;
   }
@@ -1314,7 +1320,7 @@ bool checkSlabThickness(const SurfaceComplex& c, const Vec3& normal, const Decom
   // a size field may ask for much less than its cap `size` in the slabs, so
   // with one the slabs are only warned of
   const double floor = options.minimumSlabThickness * size;
-  if (options.minimumSlabThickness > 0 && !options.costSize && thinnest < (1 - 1e-9) * floor)
+  if (options.minimumSlabThickness > 0 && !options.costSize && !atLeast(thinnest, floor))
   {
     const int largest = largestSlabCount(c, normal, criterion, K, thinnest, floor);
     msg << ", under MinimumSlabThickness " << options.minimumSlabThickness
