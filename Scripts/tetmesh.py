@@ -62,8 +62,8 @@ def parse_arguments(argv):
                    help="smallest dihedral angle TetGen aims for, the second -q value (default 10; 0: none, "
                    "as serial tetgen -pq2.0)")
     p.add_argument("--sliver-repair-angle", type=float, default=5.0,
-                   help="refine a subdomain's mesh once more with points above its flat tetrahedra on the surface "
-                   "under this dihedral angle (degrees; default 5, 0: off)")
+                   help="mesh again around a subdomain's flat tetrahedra on or held by its surface, under this "
+                   "dihedral angle, with a point above or inside each (degrees; default 5, 0: off)")
     p.add_argument("--relax-iterations", type=int, default=10, help="surface relaxation sweeps (default 10)")
     p.add_argument("--no-contour-subdivision", action="store_true",
                    help="keep the contours as the cut made them (default: their long edges are split at the size "

@@ -374,6 +374,50 @@ TEST(TetGenSubdomainMesher, SliverPointsLieInsideAboveTheirTetrahedron)
   EXPECT_TRUE(boundarySliverPoints(s, mesh, 5.0).empty());
 }
 
+TEST(TetGenSubdomainMesher, SliversHeldBySurfaceCornersGetAPointAtTheirCentroid)
+{
+  // a sliver (a square folded by a hair along a diagonal) whose four corners
+  // are surface points but none of whose faces is a surface triangle: the
+  // corners of a bipyramid over the square. TetGen cannot move those
+  // corners, so the repair puts a point at the sliver's centroid
+  TriangleSurface s;
+  s.points = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0.02 }, { 0, 1, 0 }, { 0.5, 0.5, 2 }, { 0.5, 0.5, -2 } };
+  s.triangles = { { 0, 1, 4 }, { 1, 2, 4 }, { 2, 3, 4 }, { 3, 0, 4 }, { 1, 0, 5 }, { 2, 1, 5 }, { 3, 2, 5 },
+    { 0, 3, 5 } };
+  TetMesh mesh;
+  mesh.points = s.points;
+  mesh.tets = { { 0, 1, 2, 3 } };
+  const Vec3& a = mesh.points[0];
+  if (dot(mesh.points[1] - a, cross(mesh.points[2] - a, mesh.points[3] - a)) < 0)
+  {
+    std::swap(mesh.tets[0][2], mesh.tets[0][3]);
+  }
+  ASSERT_LT(smallestDihedralDegrees(mesh.points[0], mesh.points[1], mesh.points[2], mesh.points[3]), 5.0);
+  // not of the first round's kind (no face on the surface)
+  EXPECT_TRUE(boundarySliverPoints(s, mesh, 5.0, SliverKind::OnTheSurface).empty());
+  const std::vector<BoundarySliverPoint> points = boundarySliverPoints(s, mesh, 5.0, SliverKind::HeldByCorners);
+  ASSERT_EQ(points.size(), 1u);
+  EXPECT_EQ(points[0].tetrahedron, 0);
+  EXPECT_NEAR(points[0].point[0], 0.5, 1e-12);
+  EXPECT_NEAR(points[0].point[1], 0.5, 1e-12);
+  EXPECT_NEAR(points[0].point[2], 0.005, 1e-12);
+  // one corner on the surface is enough; none is TetGen's own business
+  TetMesh inner = mesh;
+  for (int k = 1; k < 4; ++k)
+  {
+    inner.points.push_back(mesh.points[mesh.tets[0][k]]);
+    inner.tets[0][k] = static_cast<Index>(inner.points.size() - 1);
+  }
+  EXPECT_EQ(boundarySliverPoints(s, inner, 5.0, SliverKind::HeldByCorners).size(), 1u);
+  inner.points.push_back(mesh.points[mesh.tets[0][0]]);
+  inner.tets[0][0] = static_cast<Index>(inner.points.size() - 1);
+  EXPECT_TRUE(boundarySliverPoints(s, inner, 5.0, SliverKind::HeldByCorners).empty());
+  // two corners almost together leave no room for a point between them
+  mesh.points[2] = { 0.05, 0.005, 0.0001 };
+  ASSERT_LT(smallestDihedralDegrees(mesh.points[0], mesh.points[1], mesh.points[2], mesh.points[3]), 5.0);
+  EXPECT_TRUE(boundarySliverPoints(s, mesh, 5.0, SliverKind::HeldByCorners).empty());
+}
+
 TEST(TetGenSubdomainMesher, ASplitSharedTriangleIsMeshedAgainInTheNextOrders)
 {
   // TetGen 1.5 puts a point on an interface edge of this refined subdomain

@@ -206,6 +206,14 @@ using SegmentPoints = std::map<UndirectedEdge, std::vector<Index>>;
 // 1,182,366 and 1.91 degrees (serial 4.21), but the volume meshing took
 // 660 s instead of 32 s (on a loaded machine). So the floor is the
 // SurfaceRefinementOptions::segmentSpacingFloor a user may lower.
+// Session 29 split the segment beside a thin cut piece between the feet of
+// the piece's contour points, never right across from one (where a contour
+// point and a point on the segment, as far apart as the piece is thin, stood
+// under the worst tetrahedra of the graded ball of issue #22): the ball at
+// K = 16 rose from 2.02 to 2.51 degrees, at K = 32 from 2.31 to 3.17, but
+// on 32 corpus runs at K = 16 the minimum fell on 14 and rose on 11 (CGAL's
+// rotor by bisection 0.38 -> 0.00), for 2.4 % fewer tetrahedra under 10
+// degrees. Not kept (Testing/Corpus/results/sliver-round2-session29.md).
 
 class SegmentSpacing
 {

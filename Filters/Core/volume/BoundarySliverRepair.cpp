@@ -31,6 +31,23 @@ constexpr double kLiftFraction = 0.5;
 
 const int kFaceCorners[4][3] = { { 0, 1, 2 }, { 0, 1, 3 }, { 0, 2, 3 }, { 1, 2, 3 } };
 
+// The sorted key of face f of tetrahedron t (kFaceCorners).
+Triangle faceKey(const std::array<Index, 4>& t, int f)
+{
+  return sortedCorners(Triangle{ t[kFaceCorners[f][0]], t[kFaceCorners[f][1]], t[kFaceCorners[f][2]] });
+}
+
+// How many faces of the tetrahedron are surface triangles.
+int surfaceFaceCount(const std::vector<Triangle>& surfaceKeys, const std::array<Index, 4>& t)
+{
+  int count = 0;
+  for (int f = 0; f < 4; ++f)
+  {
+    count += std::binary_search(surfaceKeys.begin(), surfaceKeys.end(), faceKey(t, f)) ? 1 : 0;
+  }
+  return count;
+}
+
 // The mean inward unit normal of the tetrahedron's faces on the surface
 // (inward: towards the corner off each face); returns how many faces are on
 // the surface (0: none, their normals cancel, or two of them meet at an
@@ -42,7 +59,7 @@ int inwardNormal(const std::vector<Triangle>& surfaceKeys, const TetMesh& mesh, 
   for (int f = 0; f < 4; ++f)
   {
     const Triangle face{ t[kFaceCorners[f][0]], t[kFaceCorners[f][1]], t[kFaceCorners[f][2]] };
-    if (!std::binary_search(surfaceKeys.begin(), surfaceKeys.end(), sortedCorners(face)))
+    if (!std::binary_search(surfaceKeys.begin(), surfaceKeys.end(), faceKey(t, f)))
     {
       continue;
     }
@@ -629,7 +646,7 @@ int remeshParts(const TriangleSurface& surface, const TetMeshingOptions& options
 } // namespace
 
 std::vector<BoundarySliverPoint> boundarySliverPoints(
-  const TriangleSurface& surface, const TetMesh& mesh, double angleDegrees)
+  const TriangleSurface& surface, const TetMesh& mesh, double angleDegrees, SliverKind kind)
 {
   std::vector<Triangle> surfaceKeys;
   surfaceKeys.reserve(surface.triangles.size());
@@ -643,9 +660,10 @@ std::vector<BoundarySliverPoint> boundarySliverPoints(
   for (std::size_t k = 0; k < mesh.tets.size(); ++k)
   {
     const auto& t = mesh.tets[k];
-    // a face on the surface has three surface points: most tetrahedra are
-    // passed over without computing an angle
-    if (std::count_if(t.begin(), t.end(), [n](Index v) { return v < n; }) < 3)
+    // only a tetrahedron with a corner on the surface is held by it: most
+    // others are passed over without computing an angle
+    const auto onSurface = std::count_if(t.begin(), t.end(), [n](Index v) { return v < n; });
+    if (onSurface < (kind == SliverKind::OnTheSurface ? 3 : 1))
     {
       continue;
     }
@@ -654,16 +672,29 @@ std::vector<BoundarySliverPoint> boundarySliverPoints(
     {
       continue;
     }
-    Vec3 inward{ 0, 0, 0 };
     double mean = 0, shortest = 0;
     edgeLengths(mesh, t, mean, shortest);
-    const int surfaceFaces =
-      shortest < kTinyEdgeFraction * mean ? 0 : inwardNormal(surfaceKeys, mesh, t, angleDegrees, inward);
-    if (surfaceFaces == 0)
+    if (shortest < kTinyEdgeFraction * mean)
     {
       continue;
     }
     const Vec3 centroid = 0.25 * (a + b + c + d);
+    const bool held = onSurface < 3 || surfaceFaceCount(surfaceKeys, t) == 0;
+    if (held != (kind == SliverKind::HeldByCorners))
+    {
+      continue;
+    }
+    if (held)
+    {
+      points.push_back({ centroid, static_cast<Index>(k) });
+      continue;
+    }
+    Vec3 inward{ 0, 0, 0 };
+    const int surfaceFaces = inwardNormal(surfaceKeys, mesh, t, angleDegrees, inward);
+    if (surfaceFaces == 0)
+    {
+      continue;
+    }
     double lift = kLiftFraction * mean;
     if (surfaceFaces == 1)
     {
@@ -674,13 +705,15 @@ std::vector<BoundarySliverPoint> boundarySliverPoints(
   return points;
 }
 
-int repairBoundarySlivers(const TriangleSurface& surface, const TetMeshingOptions& options, TetMesh& mesh)
+namespace
 {
-  if (!(options.sliverRepairAngle > 0) || !options.qualityRefinement)
-  {
-    return 0;
-  }
-  const std::vector<BoundarySliverPoint> points = boundarySliverPoints(surface, mesh, options.sliverRepairAngle);
+// One round of the repair: the flat tetrahedra of one kind, their cavities
+// meshed again in one TetGen run, the parts that got better spliced in.
+// Returns the points of the kept parts.
+int repairRound(const TriangleSurface& surface, const TetMeshingOptions& options, SliverKind kind, TetMesh& mesh)
+{
+  const std::vector<BoundarySliverPoint> points =
+    boundarySliverPoints(surface, mesh, options.sliverRepairAngle, kind);
   const std::vector<char> inCavity = points.empty() ? std::vector<char>{} : cavityOf(mesh, points);
   if (inCavity.empty())
   {
@@ -709,5 +742,16 @@ int repairBoundarySlivers(const TriangleSurface& surface, const TetMeshingOption
     spliceParts(mesh, replaced, run, surface.points.size());
   }
   return inserted;
+}
+} // namespace
+
+int repairBoundarySlivers(const TriangleSurface& surface, const TetMeshingOptions& options, TetMesh& mesh)
+{
+  if (!(options.sliverRepairAngle > 0) || !options.qualityRefinement)
+  {
+    return 0;
+  }
+  return repairRound(surface, options, SliverKind::OnTheSurface, mesh) +
+    repairRound(surface, options, SliverKind::HeldByCorners, mesh);
 }
 } // namespace ptm
