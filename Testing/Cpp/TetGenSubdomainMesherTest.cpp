@@ -90,6 +90,20 @@ TetMeshingOptions boundedOptions(double maximumVolume)
   options.minimumDihedralAngle = 10;
   return options;
 }
+// The surface's points with one tetrahedron on its first four, positively
+// oriented.
+TetMesh oneTetrahedronOn(const TriangleSurface& s)
+{
+  TetMesh mesh;
+  mesh.points = s.points;
+  mesh.tets = { { 0, 1, 2, 3 } };
+  const Vec3& a = mesh.points[0];
+  if (dot(mesh.points[1] - a, cross(mesh.points[2] - a, mesh.points[3] - a)) < 0)
+  {
+    std::swap(mesh.tets[0][2], mesh.tets[0][3]);
+  }
+  return mesh;
+}
 } // namespace
 
 TEST(TetGenSubdomainMesher, BoxAndBallKeepTheirSurfaceExactly)
@@ -354,15 +368,7 @@ TEST(TetGenSubdomainMesher, SliverPointsLieInsideAboveTheirTetrahedron)
   TriangleSurface s;
   s.points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0.5, 0.5, 0 }, { 0.5, -0.5, std::sin(fold) * 0.5 }, { 0.5, 0, 3 } };
   s.triangles = { { 0, 2, 1 }, { 0, 1, 3 }, { 0, 4, 2 }, { 2, 4, 1 }, { 1, 4, 3 }, { 3, 4, 0 } };
-  TetMesh mesh;
-  mesh.points = s.points;
-  mesh.tets = { { 0, 1, 2, 3 } };
-  // orient the tetrahedron positively
-  const Vec3& a = mesh.points[0];
-  if (dot(mesh.points[1] - a, cross(mesh.points[2] - a, mesh.points[3] - a)) < 0)
-  {
-    std::swap(mesh.tets[0][2], mesh.tets[0][3]);
-  }
+  TetMesh mesh = oneTetrahedronOn(s);
   const std::vector<BoundarySliverPoint> points = boundarySliverPoints(s, mesh, 5.0);
   ASSERT_EQ(points.size(), 1u);
   EXPECT_EQ(points[0].tetrahedron, 0);
@@ -384,14 +390,7 @@ TEST(TetGenSubdomainMesher, SliversHeldBySurfaceCornersGetAPointAtTheirCentroid)
   s.points = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0.02 }, { 0, 1, 0 }, { 0.5, 0.5, 2 }, { 0.5, 0.5, -2 } };
   s.triangles = { { 0, 1, 4 }, { 1, 2, 4 }, { 2, 3, 4 }, { 3, 0, 4 }, { 1, 0, 5 }, { 2, 1, 5 }, { 3, 2, 5 },
     { 0, 3, 5 } };
-  TetMesh mesh;
-  mesh.points = s.points;
-  mesh.tets = { { 0, 1, 2, 3 } };
-  const Vec3& a = mesh.points[0];
-  if (dot(mesh.points[1] - a, cross(mesh.points[2] - a, mesh.points[3] - a)) < 0)
-  {
-    std::swap(mesh.tets[0][2], mesh.tets[0][3]);
-  }
+  TetMesh mesh = oneTetrahedronOn(s);
   ASSERT_LT(smallestDihedralDegrees(mesh.points[0], mesh.points[1], mesh.points[2], mesh.points[3]), 5.0);
   // not of the first round's kind (no face on the surface)
   EXPECT_TRUE(boundarySliverPoints(s, mesh, 5.0, SliverKind::OnTheSurface).empty());
