@@ -14,12 +14,13 @@ the input's.
 """
 import sys
 
+import ptm_testing as t
 from paraview import simple
 
 INPUT_VOLUME = 1.4048254184384606e-06
 
 
-def main(plugin, data, ranks):
+def check(plugin, data, ranks):
     simple.LoadPlugin(plugin, remote=False)
     reader = simple.OpenDataFile(data + "/regression/openfoam_bullet.off")
     cut = simple.VolumeBalancedCutter(
@@ -38,10 +39,8 @@ def main(plugin, data, ranks):
             failures.append("%d subdomains, not 40" % count.GetValue(0))
         if not abs(total - INPUT_VOLUME) <= 1e-9 * INPUT_VOLUME:
             failures.append("the subdomains' volumes add up to %.17g, not %.17g" % (total, INPUT_VOLUME))
-    for failure in failures:
-        print("FAILED: " + failure)
-    return 1 if failures else 0
+    if failures:
+        raise AssertionError("; ".join(failures))
 
 
-if __name__ == "__main__":
-    sys.exit(main(*sys.argv[1:4]))
+t.run_checks(lambda: check(*sys.argv[1:4]))
