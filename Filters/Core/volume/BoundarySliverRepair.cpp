@@ -59,7 +59,7 @@ int inwardNormal(const std::vector<Triangle>& surfaceKeys, const TetMesh& mesh, 
   for (int f = 0; f < 4; ++f)
   {
     const Triangle face{ t[kFaceCorners[f][0]], t[kFaceCorners[f][1]], t[kFaceCorners[f][2]] };
-    if (!std::binary_search(surfaceKeys.begin(), surfaceKeys.end(), faceKey(t, f)))
+    if (!std::binary_search(surfaceKeys.begin(), surfaceKeys.end(), sortedCorners(face)))
     {
       continue;
     }
