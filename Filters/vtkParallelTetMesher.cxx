@@ -214,26 +214,36 @@ MeshedSubdomain meshSubdomain(ptm::SubdomainSurface& surface, const ptm::TetMesh
     m.volumeChange = refined.volumeChange;
     m.deviation = refined.largestDeviation;
   }
-  ptm::TetMeshingResult r = meshWithSizes(surface, options, field);
-  if (!r.ok && refinement && m.pointsAdded > 0)
+  // the fall-backs below share the first call's processor-time budget
+  // (TetMeshingOptions::processorBudgetSeconds): a surface on which TetGen
+  // stalls fails in bounded time instead of stalling in each of them
+  ptm::TetMeshingOptions left = options;
+  ptm::TetMeshingResult r = meshWithSizes(surface, left, field);
+  left.processorBudgetSeconds = r.processorBudgetSeconds - r.processorSeconds;
+  if (!r.ok && !r.outOfTime && refinement && m.pointsAdded > 0)
   {
     m.warnings.push_back("TetGen failed on the refined surface (" + r.error +
       "); meshed without boundary refinement");
     surface = unrefined;
     m.pointsAdded = 0;
     m.volumeChange = m.deviation = 0;
-    r = meshWithSizes(surface, options, field);
+    r = meshWithSizes(surface, left, field);
+    left.processorBudgetSeconds -= r.processorSeconds;
   }
-  if (!r.ok && options.qualityRefinement)
+  if (!r.ok && !r.outOfTime && options.qualityRefinement)
   {
     // TetGen 1.5's crashes are mostly assertions in its quality refinement
     // (oblong, K = 64 parallel planes: signal 6 in all three point orders
     // for one subdomain); without -q it still recovers the surface and
     // bounds the volume, so the run ends with a mesh and a warning.
-    ptm::TetMeshingOptions sizeOnly = options;
+    ptm::TetMeshingOptions sizeOnly = left;
     sizeOnly.qualityRefinement = false;
     ptm::TetMeshingResult plain = meshWithSizes(surface, sizeOnly, field);
-    if (plain.ok)
+    if (plain.outOfTime)
+    {
+      r = std::move(plain);
+    }
+    else if (plain.ok)
     {
       m.warnings.push_back("TetGen failed with quality refinement (" + r.error +
         "); meshed with the volume bound only (no -q), so this subdomain's tetrahedra are not "
@@ -244,6 +254,11 @@ MeshedSubdomain meshSubdomain(ptm::SubdomainSurface& surface, const ptm::TetMesh
   if (!r.ok)
   {
     m.error = r.error;
+    if (r.outOfTime)
+    {
+      m.error += " (the surface TetGen was given: " + std::to_string(surface.surface.triangles.size()) +
+        " triangles, " + std::to_string(m.pointsAdded) + " points added by the boundary refinement)";
+    }
     return m;
   }
   if (!r.splitTriangles.empty())
@@ -559,6 +574,7 @@ ptm::TetMeshingOptions meshingOptions(vtkParallelTetMesher* filter, const ptm::C
     : std::pow(piece.inputMeanEdgeLength, 3) / (6.0 * std::sqrt(2.0));
   options.minimumDihedralAngle = filter->GetMinimumDihedralAngle();
   options.sliverRepairAngle = filter->GetSliverRepairAngle();
+  options.timeLimitSeconds = filter->GetTetGenTimeLimit();
   options.extraSwitches = filter->GetExtraSwitches();
   return options;
 }
@@ -683,6 +699,8 @@ std::string vtkParallelTetMesher::PropertyError()
     "MinimumDihedralAngle", "lie in [0, 30] degrees", this->MinimumDihedralAngle);
   checks.Require(this->SliverRepairAngle >= 0.0 && this->SliverRepairAngle <= 30.0,
     "SliverRepairAngle", "lie in [0, 30] degrees", this->SliverRepairAngle);
+  checks.Require(this->TetGenTimeLimit >= 0.0 && this->TetGenTimeLimit <= 1e6,
+    "TetGenTimeLimit", "be 0 (automatic) or a number of seconds up to 1e6", this->TetGenTimeLimit);
   checks.Require(this->CoplanarTolerance >= 0.0 && this->CoplanarTolerance <= 10.0,
     "CoplanarTolerance", "lie in [0, 10] degrees", this->CoplanarTolerance);
   checks.Require(this->BoundaryMinimumAngle > 0.0 && this->BoundaryMinimumAngle <= 34.0,
@@ -759,6 +777,7 @@ void vtkParallelTetMesher::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumVolume: " << this->MaximumVolume << "\n";
   os << indent << "MinimumDihedralAngle: " << this->MinimumDihedralAngle << "\n";
   os << indent << "SliverRepairAngle: " << this->SliverRepairAngle << "\n";
+  os << indent << "TetGenTimeLimit: " << this->TetGenTimeLimit << "\n";
   os << indent << "ExtraSwitches: " << this->ExtraSwitches << "\n";
   os << indent << "SizeExpression: " << this->SizeExpression << "\n";
   os << indent << "BoundaryRefinement: " << this->BoundaryRefinement << "\n";

@@ -86,6 +86,17 @@ public:
   ///@}
 
   ///@{
+  /// Processor seconds one TetGen run may use (default 0: automatic, 2 s
+  /// plus about 30 us per expected tetrahedron and 0.4 ms per surface
+  /// triangle). A run over it is stopped and tried in another input order;
+  /// all runs of one subdomain together may use 4 x this limit, then the
+  /// filter fails, naming the subdomain and what to do. Raise it for a
+  /// surface of long, nearly flat triangles on which TetGen is merely slow.
+  vtkSetMacro(TetGenTimeLimit, double);
+  vtkGetMacro(TetGenTimeLimit, double);
+  ///@}
+
+  ///@{
   /// Boundary refinement before TetGen (default on; see
   /// ptm::refineSubdomainSurface): the outer part of every subdomain surface
   /// is meshed anew on the input surface, with edges near the target size
@@ -153,6 +164,7 @@ protected:
   double MaximumVolume = 0.0;
   double MinimumDihedralAngle = 10.0;
   double SliverRepairAngle = 5.0;
+  double TetGenTimeLimit = 0.0;
   std::string ExtraSwitches;
   std::string SizeExpression;
   bool BoundaryRefinement = true;

@@ -64,6 +64,9 @@ def parse_arguments(argv):
     p.add_argument("--sliver-repair-angle", type=float, default=5.0,
                    help="mesh again around a subdomain's flat tetrahedra on or held by its surface, under this "
                    "dihedral angle, with a point above or inside each (degrees; default 5, 0: off)")
+    p.add_argument("--tetgen-time-limit", type=float, default=0.0,
+                   help="processor seconds one TetGen run may use (default 0: automatic, about 6x TetGen's "
+                   "speed); all runs of a subdomain together may use 4x this, then the run fails naming it")
     p.add_argument("--relax-iterations", type=int, default=10, help="surface relaxation sweeps (default 10)")
     p.add_argument("--no-contour-subdivision", action="store_true",
                    help="keep the contours as the cut made them (default: their long edges are split at the size "
@@ -408,6 +411,7 @@ def main(argv):
     mesher = simple.ParallelTetMesher(
         Input=relaxed, RadiusEdgeRatio=args.radius_edge_ratio, MinimumDihedralAngle=args.min_dihedral,
         SliverRepairAngle=args.sliver_repair_angle,
+        TetGenTimeLimit=args.tetgen_time_limit,
         MaximumVolume=volume,
         BoundaryRefinement=0 if args.no_boundary_refinement else 1,
         BoundarySpacingFloor=args.boundary_spacing_floor,

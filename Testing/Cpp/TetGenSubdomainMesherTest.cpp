@@ -250,6 +250,45 @@ TEST(TetGenSubdomainMesher, StallInOnePointOrderIsStoppedAndRetriedInAnother)
   expectConformingMesh(surface, r, "stalled, then retried in another order");
 }
 
+TEST(TetGenSubdomainMesher, StallsInEveryOrderEndWithinTheProcessorBudget)
+{
+  // a box asked for about 10 M tetrahedra (far more than 1 s of TetGen) with 1 s
+  // per run: every run is stopped, and once the budget (4 x the limit by
+  // default) has less than a second left no run is started and the error
+  // says why and what to do. Before the budget this went through every
+  // order and fall-back (OpenFOAM's NACA0012 wing: no message in 15 minutes).
+  const TriangleSurface box = subdividedBox({ 0, 0, 0 }, { 1, 1, 1 }, 4);
+  TetMeshingOptions options;
+  options.maximumVolume = 2e-7;
+  options.timeLimitSeconds = 1.0;
+  options.sliverRepairAngle = 0.0;
+  TetMeshingResult r = meshClosedSurface(box, options);
+  EXPECT_FALSE(r.ok);
+  EXPECT_TRUE(r.outOfTime) << r.error;
+  EXPECT_DOUBLE_EQ(r.processorBudgetSeconds, kBudgetInRunLimits * options.timeLimitSeconds);
+  EXPECT_GE(r.processorSeconds, r.processorBudgetSeconds - 1.0);
+  EXPECT_LE(r.processorSeconds, r.processorBudgetSeconds + 1.5);
+  EXPECT_GE(r.attempts, 3);
+  EXPECT_LE(r.attempts, 5);
+  EXPECT_NE(r.error.find("processor-time budget"), std::string::npos) << r.error;
+  EXPECT_NE(r.error.find("--tetgen-time-limit"), std::string::npos) << r.error;
+
+  // a budget given (what a caller's first try left) is all the runs get
+  options.processorBudgetSeconds = 2.0;
+  r = meshClosedSurface(box, options);
+  EXPECT_TRUE(r.outOfTime);
+  EXPECT_LE(r.attempts, 2);
+  EXPECT_LE(r.processorSeconds, 3.5);
+
+  // a mesh found within the budget reports what it used
+  options = TetMeshingOptions{};
+  r = meshClosedSurface(subdividedBox({ 0, 0, 0 }, { 1, 1, 1 }, 2), options);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_FALSE(r.outOfTime);
+  EXPECT_GT(r.processorSeconds, 0.0);
+  EXPECT_LT(r.processorSeconds, r.processorBudgetSeconds);
+}
+
 TEST(TetGenSubdomainMesher, AbortInThreePointOrdersIsRetriedWithFacetsShuffled)
 {
   // TetGen 1.5 aborts on this subdomain with the points as given, reversed

@@ -435,6 +435,7 @@ TetMeshingOptions cavityOptions(const TetMeshingOptions& options, const Cavity& 
   // a cavity TetGen stalls on costs a few seconds per order; two suffice to
   // step round the crashes of a canonical order
   o.inputOrders = std::min(options.inputOrders, 2);
+  o.processorBudgetSeconds = 0; // the cavity's own, not what a subdomain's fall-back had left
   o.insidePoints = insidePoints;
   o.surfaceKnownValid = true; // faces of TetGen's mesh, and no point pinched (cavityOf)
   if (options.pointSizes.empty())

@@ -189,6 +189,26 @@ bool readAll(int fd, void* data, std::size_t bytes)
   return true;
 }
 
+// The time TetGen may take on one surface: each run's limits, and the
+// processor time all its runs together may use (TetMeshingOptions::
+// processorBudgetSeconds), with what they have used so far.
+struct TimeLimits
+{
+  double cpu = 0, wall = 0; // seconds per TetGen run
+  double budget = 0;        // processor seconds for all runs
+  double spent = 0;         // used so far: the TetGen processes' user and system time
+  int stopped = 0;          // runs stopped at a limit
+  bool exhausted = false;   // a run was not started: less than a second of the budget was left
+
+  // The processor-time limit of the next run, 0 if the budget cannot pay
+  // for one (the kernel's limit counts whole seconds).
+  double nextCpu() const
+  {
+    const double left = std::min(cpu, budget - spent);
+    return left >= 1.0 ? left : 0.0;
+  }
+};
+
 struct ChildHeader
 {
   int status = 0; // 0 meshed, 1 TetGen error code, 2 out of memory, 3 bad switches
@@ -218,6 +238,20 @@ bool waitReadable(int fd, double seconds)
   }
 }
 
+constexpr const char* kBudgetSpent = "no TetGen run was started: the processor-time budget is spent";
+
+// Waits for the TetGen process `pid` to end; its wait status, and the
+// processor time (user and system) it used.
+double reapChild(pid_t pid, int& waitStatus)
+{
+  rusage usage{};
+  while (::wait4(pid, &waitStatus, 0, &usage) < 0 && errno == EINTR)
+  {
+  }
+  auto seconds = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec); };
+  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
 // Runs TetGen in a child process: libtet 1.5 frees its memory in
 // terminatetetgen() and again in the destructor while the int it throws
 // unwinds, so every TetGen failure would otherwise crash the whole
@@ -227,11 +261,20 @@ bool waitReadable(int fd, double seconds)
 // the kernel (RLIMIT_CPU, so a loaded or oversubscribed machine does not
 // stop a run that is merely slow), and one still running after wallSeconds
 // is killed; both set timedOut.
-bool runTetGenIsolated(tetgenio& in, const std::string& switches, double cpuSeconds,
-  double wallSeconds, std::vector<double>& points, std::vector<int>& tets, int& status, int& code,
+bool runTetGenIsolated(tetgenio& in, const std::string& switches, TimeLimits& limits,
+  std::vector<double>& points, std::vector<int>& tets, int& status, int& code,
   bool& timedOut, std::string& error, tetgenio* addin = nullptr)
 {
   timedOut = false;
+  const double cpuSeconds = limits.nextCpu(), wallSeconds = limits.wall;
+  if (cpuSeconds <= 0)
+  {
+    limits.exhausted = true;
+    error = kBudgetSpent;
+    status = 1;
+    code = 0;
+    return false;
+  }
   int fds[2];
   if (::pipe(fds) != 0)
   {
@@ -306,13 +349,13 @@ bool runTetGenIsolated(tetgenio& in, const std::string& switches, double cpuSeco
   {
     ::kill(pid, SIGKILL);
     ::close(fds[0]);
-    while (::waitpid(pid, nullptr, 0) < 0 && errno == EINTR)
-    {
-    }
+    int ignored = 0;
+    limits.spent += reapChild(pid, ignored);
+    ++limits.stopped;
     std::ostringstream msg;
     msg << "TetGen did not finish within " << wallSeconds
         << " s and was stopped (TetGen 1.5 can loop for ever recovering the boundary of "
-           "nearly degenerate input)";
+           "nearly degenerate input, or refine for very long next to nearly flat triangles)";
     error = msg.str();
     timedOut = true;
     status = 1;
@@ -330,17 +373,16 @@ bool runTetGenIsolated(tetgenio& in, const std::string& switches, double cpuSeco
   }
   ::close(fds[0]);
   int waitStatus = 0;
-  while (::waitpid(pid, &waitStatus, 0) < 0 && errno == EINTR)
-  {
-  }
+  limits.spent += reapChild(pid, waitStatus);
   if (!received)
   {
     if (WIFSIGNALED(waitStatus) && WTERMSIG(waitStatus) == SIGXCPU)
     {
+      ++limits.stopped;
       std::ostringstream msg;
       msg << "TetGen used more than " << std::ceil(cpuSeconds)
           << " s of processor time and was stopped (TetGen 1.5 can loop for ever recovering the "
-             "boundary of nearly degenerate input)";
+             "boundary of nearly degenerate input, or refine for very long next to nearly flat triangles)";
       error = msg.str();
       timedOut = true;
     }
@@ -444,10 +486,10 @@ std::string inputError(const TriangleSurface& s, const TetMeshingOptions& option
   }
   if (!(options.radiusEdgeRatio > 1.0) || !(options.maximumVolume >= 0) ||
     !(options.minimumDihedralAngle >= 0 && options.minimumDihedralAngle < 70) ||
-    !(options.timeLimitSeconds >= 0) || options.inputOrders < 1 || options.inputOrders > kInputOrders)
+    !(options.timeLimitSeconds >= 0) || !(options.processorBudgetSeconds >= 0) || options.inputOrders < 1 || options.inputOrders > kInputOrders)
   {
     return "invalid options: the radius-edge ratio must exceed 1, the maximum volume and the "
-           "time limit must not be negative, the minimum dihedral angle must lie in [0, 70) "
+           "time limit and budget must not be negative, the minimum dihedral angle must lie in [0, 70) "
            "degrees, the input orders in [1, " + std::to_string(kInputOrders) + "]";
   }
   if (!options.pointSizes.empty() &&
@@ -559,17 +601,14 @@ std::string tetgenSwitches(const TetMeshingOptions& options, double volume, char
   return switches.str();
 }
 
-struct TimeLimits
-{
-  double cpu = 0, wall = 0; // seconds per TetGen run
-};
-
 // Limits: TetGen needs about 5 microseconds of processor time per
 // tetrahedron here (190,000 per second); a run gets 2 s plus 30 us per
 // expected tetrahedron (the volume estimate plus 4 per surface triangle),
 // six times that, plus 0.4 ms per surface triangle, and the wall clock the
-// old generous 60 s plus 10 us per tetrahedron, which only matters when the
-// machine is swapping. The term per triangle is for slabs much thinner than
+// old generous 60 s plus 10 us per tetrahedron plus ten times the processor
+// limit, which only matters when the machine is swapping (a limit given in
+// the options is processor time too: with 64 ranks on 2 cores a run gets a
+// 32nd of a core, so the wall clock must not stop it). The term per triangle is for slabs much thinner than
 // the size: under -Y TetGen's quality refinement makes slow progress there.
 // OCCT's MODERN_Table_1 at K = 16 (parallel planes), subdomain 11 (20,590
 // triangles, a slab 0.027 x the size thick) takes 11.7 s of refinement for
@@ -588,8 +627,31 @@ TimeLimits timeLimits(const TriangleSurface& s, const TetMeshingOptions& options
   limits.cpu = options.timeLimitSeconds > 0
     ? options.timeLimitSeconds
     : 2.0 + 3e-5 * expectedTets + 4e-4 * static_cast<double>(s.triangles.size());
-  limits.wall = options.timeLimitSeconds > 0 ? options.timeLimitSeconds : 60.0 + 1e-5 * expectedTets;
+  limits.wall = 60.0 + 10.0 * limits.cpu + 1e-5 * expectedTets;
+  limits.budget = options.processorBudgetSeconds > 0 ? options.processorBudgetSeconds
+                                                     : kBudgetInRunLimits * limits.cpu;
   return limits;
+}
+
+// Why the runs gave no mesh when the budget ran out: the budget, the runs,
+// the shape of the surface, and what to do.
+std::string budgetError(const TriangleSurface& s, const TimeLimits& limits, int attempts, const std::string& last)
+{
+  std::size_t flat = 0;
+  for (const auto& t : s.triangles)
+  {
+    flat += triangleMinimumAngle(s.points[t[0]], s.points[t[1]], s.points[t[2]]) < 10.0 * kPi / 180.0 ? 1 : 0;
+  }
+  std::ostringstream msg;
+  msg.precision(3);
+  msg << "TetGen found no mesh within the processor-time budget of " << limits.budget << " s ("
+      << attempts << " runs, " << limits.stopped << " stopped at the limit of " << std::ceil(limits.cpu)
+      << " s per run, " << limits.spent << " s used; the last: " << last << "). "
+      << 100.0 * static_cast<double>(flat) / static_cast<double>(s.triangles.size())
+      << " % of this surface's triangles have an angle under 10 degrees, and TetGen 1.5 can take very long "
+         "next to such triangles: remesh the input (--remesh), use a larger size or fewer subdomains, or "
+         "raise the limit per run (TetGenTimeLimit, --tetgen-time-limit)";
+  return msg.str();
 }
 
 // A permutation of 0..n-1 by a xorshift generator from `seed`.
@@ -659,7 +721,7 @@ struct TetGenRuns
 // time on 2 ranks; with six orders after a stall, 4 min 26 s), so after a
 // stall the first six are all.
 TetGenRuns runInOrders(const TriangleSurface& s, const TetMeshingOptions& options, const std::vector<Vec3>& holes,
-  const std::string& switches, const TimeLimits& limits, int firstOrder)
+  const std::string& switches, TimeLimits& limits, int firstOrder)
 {
   const std::size_t n = s.points.size();
   TetGenRuns runs;
@@ -668,6 +730,12 @@ TetGenRuns runInOrders(const TriangleSurface& s, const TetMeshingOptions& option
   std::vector<Index> facets;
   for (int attempt = firstOrder; attempt < options.inputOrders && !meshed; ++attempt)
   {
+    if (limits.nextCpu() <= 0)
+    {
+      limits.exhausted = true; // the last run's failure stays the one reported
+      runs.failure = runs.failure.empty() ? kBudgetSpent : runs.failure;
+      break;
+    }
     inputOrder(n, s.triangles.size(), attempt, runs.order, facets);
     std::vector<int> position(n);
     for (std::size_t i = 0; i < n; ++i)
@@ -683,7 +751,7 @@ TetGenRuns runInOrders(const TriangleSurface& s, const TetMeshingOptions& option
     runs.failure.clear();
     runs.status = runs.code = 0;
     bool timedOut = false;
-    const bool ran = runTetGenIsolated(in, switches, limits.cpu, limits.wall, runs.points, runs.tets, runs.status,
+    const bool ran = runTetGenIsolated(in, switches, limits, runs.points, runs.tets, runs.status,
       runs.code, timedOut, runs.failure, options.insidePoints.empty() ? nullptr : &addin);
     meshed = ran && runs.status == 0;
     runs.attempts = attempt + 1 - firstOrder;
@@ -732,7 +800,7 @@ std::string surfacePointsError(
 constexpr const char* kFineTolerance = "T1e-12";
 
 TetGenRuns runTetGen(const TriangleSurface& s, const TetMeshingOptions& options, const std::vector<Vec3>& holes,
-  const std::string& switches, const TimeLimits& limits, int firstOrder)
+  const std::string& switches, TimeLimits& limits, int firstOrder)
 {
   TetGenRuns runs = runInOrders(s, options, holes, switches, limits, firstOrder);
   if (runs.failure.empty() && runs.status == 0 && !surfacePointsError(s, runs.points, runs.order).empty())
@@ -888,7 +956,7 @@ void fillRefinementInput(const TriangleSurface& s, const TetGenRuns& first, cons
 // surface recovered first, then refined. Both runs are deterministic, so the
 // mesh is still the same on any rank.
 TetGenRuns recoverThenRefine(const TriangleSurface& s, const TetMeshingOptions& options,
-  const std::vector<Vec3>& holes, double volume, const TimeLimits& limits, int firstOrder)
+  const std::vector<Vec3>& holes, double volume, TimeLimits& limits, int firstOrder)
 {
   TetMeshingOptions recoverOnly;
   recoverOnly.qualityRefinement = false;
@@ -916,7 +984,7 @@ TetGenRuns recoverThenRefine(const TriangleSurface& s, const TetMeshingOptions& 
   std::iota(second.order.begin(), second.order.end(), Index{ 0 });
   second.attempts = 1;
   bool timedOut = false;
-  runTetGenIsolated(in, refinementSwitches(options, volume) + first.tolerance, limits.cpu, limits.wall, second.points,
+  runTetGenIsolated(in, refinementSwitches(options, volume) + first.tolerance, limits, second.points,
     second.tets, second.status, second.code, timedOut, second.failure);
   return second;
 }
@@ -1215,7 +1283,7 @@ constexpr int kOrdersForAChangedSurface = 4;
 // the contract (meshError). `lastOrder` is the order of the last run;
 // `contractBroken` says TetGen gave a mesh that meshError refused.
 TetMeshingResult meshFromOrder(const TriangleSurface& s, const TetMeshingOptions& options,
-  const std::vector<Vec3>& holes, double volume, const TimeLimits& limits, int firstOrder, int& lastOrder,
+  const std::vector<Vec3>& holes, double volume, TimeLimits& limits, int firstOrder, int& lastOrder,
   bool& contractBroken)
 {
   TetMeshingResult r;
@@ -1288,7 +1356,7 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
     r.error = "could not find a point inside a cavity of the surface";
     return r;
   }
-  const TimeLimits limits = timeLimits(s, options, volume);
+  TimeLimits limits = timeLimits(s, options, volume);
   // TetGen 1.5 can mesh a surface and still break the contract in one input
   // order only: OpenSCAD's difference-tests.scad at K = 16 (bisection), subdomain 13
   // of 1,346 refined triangles, got a point on an interface edge (its two
@@ -1313,6 +1381,13 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
     firstOrder = lastOrder + 1;
   }
   r.attempts = attempts;
+  r.processorSeconds = limits.spent;
+  r.processorBudgetSeconds = limits.budget;
+  r.outOfTime = !r.ok && limits.nextCpu() <= 0;
+  if (r.outOfTime)
+  {
+    r.error = budgetError(s, limits, attempts, r.error);
+  }
   if (r.ok && r.splitTriangles.empty())
   {
     TetMeshingOptions resolved = options;

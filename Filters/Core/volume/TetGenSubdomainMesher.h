@@ -18,7 +18,8 @@
 // when the points come in another order: then (a crash, or a run over its
 // processor-time limit, which is stopped) it runs again with the points
 // reversed, then shuffled, then with the facets shuffled too (fixed seeds;
-// six orders, and six more where none stalled). If all of them fail, the surface
+// six orders, and six more where none stalled), all within one
+// processor-time budget per surface. If all of them fail, the surface
 // is recovered in one run without refinement and the mesh refined in a
 // second (-rY). Flat tetrahedra TetGen leaves on the surface are then
 // repaired in small cavities meshed again (TetMeshingOptions::
@@ -36,6 +37,16 @@ namespace ptm
 // fraction of a second. The measurements are at runInOrders.
 constexpr int kInputOrders = 12;
 constexpr int kInputOrdersAfterAStall = 6;
+// What all TetGen runs of one surface may use together, in per-run
+// processor-time limits, unless TetMeshingOptions::processorBudgetSeconds
+// says otherwise. Before the budget a surface on which TetGen stalls went
+// through six orders, the two-run fall-back and the caller's fall-backs
+// (about 20 stopped runs): OpenFOAM's NACA0012 wing (long span-wise
+// strips, 99 % of its triangles under 10 degrees) at K = 7 on 3 ranks gave
+// no message in 15 minutes, each TetGen process over 1 GB. Four is two
+// more than the documented stall that another order mends needs
+// (tetgen_stall_in_canonical_order.off: stopped once, then meshed).
+constexpr double kBudgetInRunLimits = 4.0;
 
 struct TetMeshingOptions
 {
@@ -72,9 +83,16 @@ struct TetMeshingOptions
   // the edges between the facets it merged. Told not to merge (-M), TetGen
   // -pq on that surface itself gives 0.0 degrees and 4.7 x the tetrahedra.
   std::vector<char> splittableTriangles;
-  // per TetGen run, processor and wall time; 0: 2 s + 30 us of processor time
-  // per expected tetrahedron (about 6x TetGen's speed), 60 s + 10 us of wall time
+  // per TetGen run, processor time; 0: 2 s + 30 us per expected tetrahedron
+  // (about 6x TetGen's speed) + 0.4 ms per surface triangle. A run is also
+  // stopped after 60 s + 10x this + 10 us per expected tetrahedron of wall time.
   double timeLimitSeconds = 0.0;
+  // processor time of all TetGen runs of this surface together (every input
+  // order and fall-back); when less than a second of it is left no run is
+  // started and the result says so (TetMeshingResult::outOfTime). 0:
+  // kBudgetInRunLimits x the per-run processor-time limit. A caller with
+  // fall-backs of its own passes on what the first call left.
+  double processorBudgetSeconds = 0.0;
   // input orders tried after a crash, a stall or a mesh that changed the
   // surface (meshClosedSurface), before the two-run fall-back,
   // 1..kInputOrders: the points as given, reversed, shuffled, then points
@@ -120,6 +138,12 @@ struct TetMeshingResult
   // true if TetGen crashed or stalled meshing and refining in one run, and
   // the mesh comes from two: the surface recovered (-pY), then refined (-rY)
   bool recoveredThenRefined = false;
+  // processor time TetGen's runs used (the sliver repair's excluded), the
+  // budget they had, and whether it ran out before a mesh was found (then
+  // `error` says so, with the runs and what to do)
+  double processorSeconds = 0.0;
+  double processorBudgetSeconds = 0.0;
+  bool outOfTime = false;
   // points the sliver repair put inside (TetMeshingOptions::sliverRepairAngle;
   // 0: it left the mesh as TetGen made it)
   int sliverRepairPoints = 0;
