@@ -47,6 +47,34 @@ TriangleSurface thinBar(double lift = 0.0)
   return s;
 }
 
+// A cylinder of radius 1 and length `length` along z as an extrusion
+// exporter writes it: `sides` long strips, each two triangles, and fans
+// around the centres of its ends (outward).
+TriangleSurface extrudedCircle(int sides, double length)
+{
+  TriangleSurface s;
+  for (double z : { 0.0, length })
+  {
+    for (int i = 0; i < sides; ++i)
+    {
+      const double a = 2 * kPi * i / sides;
+      s.points.push_back({ std::cos(a), std::sin(a), z });
+    }
+  }
+  const Index bottom = static_cast<Index>(s.points.size()), top = bottom + 1;
+  s.points.push_back({ 0, 0, 0 });
+  s.points.push_back({ 0, 0, length });
+  for (Index i = 0; i < sides; ++i)
+  {
+    const Index j = (i + 1) % sides;
+    s.triangles.push_back({ i, j, sides + j });
+    s.triangles.push_back({ i, sides + j, sides + i });
+    s.triangles.push_back({ bottom, j, i });
+    s.triangles.push_back({ top, sides + i, sides + j });
+  }
+  return s;
+}
+
 SubdomainSurface wholeSurface(const TriangleSurface& s)
 {
   SubdomainSurface out;
@@ -247,6 +275,33 @@ TEST(SurfaceRefinement, ALowerSpacingFloorFollowsAThinStrip)
   EXPECT_GT(lower.pointsAdded, 2 * byDefault.pointsAdded);
   EXPECT_LT(smallestAngleDegrees(coarse.surface), 20.0);
   EXPECT_GT(smallestAngleDegrees(fine.surface), 20.0);
+}
+
+TEST(SurfaceRefinement, ASurfaceOfStripsFarFinerThanTheSizeIsLeftAsItIs)
+{
+  // 1,000 strips 0.0063 wide and 20 long: split at an eighth of the size
+  // they would get 159 points each, about 50 x the tetrahedra the size
+  // predicts (the pattern of OpenFOAM's NACA0012 wing, where TetGen then
+  // stalled); 100 strips 0.063 wide stay under the bound and are refined
+  SurfaceRefinementOptions options;
+  options.size = 1.0;
+  SubdomainSurface many = wholeSurface(extrudedCircle(1000, 20.0));
+  const TriangleSurface before = many.surface;
+  const SurfaceRefinementResult skipped = refineSubdomainSurface(many, options);
+  ASSERT_TRUE(skipped.ok) << skipped.error;
+  EXPECT_EQ(skipped.pointsAdded, 0u);
+  ASSERT_EQ(skipped.warnings.size(), 1u);
+  EXPECT_NE(skipped.warnings[0].find("boundary refinement skipped: it would put"), std::string::npos)
+    << skipped.warnings[0];
+  EXPECT_EQ(many.surface.points, before.points);
+  EXPECT_EQ(many.surface.triangles, before.triangles);
+
+  SubdomainSurface few = wholeSurface(extrudedCircle(100, 20.0));
+  const SurfaceRefinementResult refined = refineSubdomainSurface(few, options);
+  ASSERT_TRUE(refined.ok) << refined.error;
+  EXPECT_TRUE(refined.warnings.empty());
+  EXPECT_GT(refined.pointsAdded, 10000u);
+  EXPECT_TRUE(closedAndConsistent(few.surface));
 }
 
 TEST(SurfaceRefinement, RefusesNonsenseOptions)

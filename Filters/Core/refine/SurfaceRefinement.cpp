@@ -1,5 +1,6 @@
 #include "SurfaceRefinement.h"
 
+
 #include "InterfaceTriangulation.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -674,6 +675,64 @@ bool meshFacet(const SubdomainSurface& s, const Facet& facet, const std::vector<
 /// @}
 } // namespace
 
+namespace
+{
+// The tetrahedra the volume bound (a regular tetrahedron of edge `size`)
+// predicts for the closed surface `s`: 2 x its volume / the bound.
+double expectedTetrahedra(const SubdomainSurface& s, double size)
+{
+  double sixTimes = 0;
+  for (const Triangle& t : s.surface.triangles)
+  {
+    sixTimes += dot(s.surface.points[t[0]], cross(s.surface.points[t[1]], s.surface.points[t[2]]));
+  }
+  return 2.0 * std::fabs(sixTimes / 6.0) / (size * size * size / (6.0 * std::sqrt(2.0)));
+}
+
+// The most points the refinement may put on one subdomain's segments, per
+// predicted tetrahedron and surface point: kMostPointsAddedPerExpected at
+// the default floor, more for a lower one (a strip is split at the floor,
+// so its points grow as 1 / floor).
+double mostPointsFactor(double floor)
+{
+  return kMostPointsAddedPerExpected * kDefaultSegmentSpacingFloor / floor;
+}
+
+std::string tooManyPointsWarning(
+  std::size_t onSegments, double factor, double expected, const SubdomainSurface& s)
+{
+  std::size_t thin = 0;
+  for (std::size_t t = 0; t < s.surface.triangles.size(); ++t)
+  {
+    const Triangle& tri = s.surface.triangles[t];
+    thin += s.otherSide[t] < 0 &&
+        triangleMinimumAngle(s.surface.points[tri[0]], s.surface.points[tri[1]], s.surface.points[tri[2]]) <
+          10.0 * kPi / 180.0
+      ? 1
+      : 0;
+  }
+  std::ostringstream msg;
+  msg << "boundary refinement skipped: it would put " << onSegments << " points on the edges of the outer "
+      << "boundary, more than " << factor << " x the " << static_cast<long long>(expected)
+      << " tetrahedra the size predicts here plus the " << s.surface.points.size() << " surface points ("
+      << thin << " outer triangles have an angle under 10 degrees: long thin input triangles are split "
+      << "at their width); the surface is meshed as it is. Remeshing the input (--remesh) avoids this";
+  return msg.str();
+}
+
+// `result` for a surface left as it was.
+SurfaceRefinementResult unrefined(SurfaceRefinementResult& result)
+{
+  result.minimumAngleAfter = result.minimumAngleBefore;
+  result.facetsMeshed = 0;
+  result.segmentsSplit = 0;
+  result.pointsAdded = 0;
+  result.largestDeviation = 0;
+  result.ok = true;
+  return result;
+}
+} // namespace
+
 SurfaceRefinementResult refineSubdomainSurface(
   SubdomainSurface& surface, const SurfaceRefinementOptions& options)
 {
@@ -694,6 +753,15 @@ SurfaceRefinementResult refineSubdomainSurface(
 
   SubdomainSurface refined = surface; // the work copy: the input stays intact for a fallback
   const SegmentPoints split = splitSegments(refined, across, label, options);
+  const double expected = expectedTetrahedra(surface, options.size);
+  const double factor = mostPointsFactor(options.segmentSpacingFloor);
+  const std::size_t most = static_cast<std::size_t>(factor * (expected + static_cast<double>(surface.surface.points.size())));
+  const std::size_t onSegments = refined.surface.points.size() - surface.surface.points.size();
+  if (onSegments > most)
+  {
+    result.warnings.push_back(tooManyPointsWarning(onSegments, factor, expected, surface));
+    return unrefined(result);
+  }
   const std::vector<Facet> facets = collectFacets(surface, across, label, split);
   result.facets = facets.size();
   result.segmentsSplit = split.size();
@@ -731,12 +799,7 @@ SurfaceRefinementResult refineSubdomainSurface(
       msg << "boundary refinement skipped: a planar facet of " << facets[f].triangles.size()
           << " triangles could not be meshed (" << why << "); the surface is meshed as it is";
       result.warnings.push_back(msg.str());
-      result.minimumAngleAfter = result.minimumAngleBefore;
-      result.facetsMeshed = 0;
-      result.segmentsSplit = 0;
-      result.largestDeviation = 0;
-      result.ok = true;
-      return result;
+      return unrefined(result);
     }
     ++result.facetsMeshed;
   }

@@ -24,7 +24,9 @@
 //  order. New points are appended after them, in a deterministic order, and
 //  lie on the input surface: on a segment, or in a facet's plane inside it.
 //  So the enclosed volume does not change beyond round-off.
-//  On a facet the mesher refuses (degenerate input), the surface is returned
+//  On a facet the mesher refuses (degenerate input), or where the segments
+//  alone would get more points than kMostPointsAddedPerExpected allows (a
+//  surface of strips far thinner than the size), the surface is returned
 //  unrefined with a warning: still conforming, only not improved.
 #include "InterfaceTriangulation.h"
 #include "SubdomainSurface.h"
@@ -39,6 +41,19 @@ namespace ptm
 constexpr double kDefaultSegmentSpacingFloor = 1.0 / 8.0;
 // The smallest floor accepted (the largest is 1, the whole local size).
 constexpr double kSmallestSegmentSpacingFloor = 1.0 / 1024;
+// The most points the refinement puts on the segments of one subdomain, as
+// a multiple of the tetrahedra its volume bound predicts plus its surface
+// points, at the default floor (times default floor / floor for another);
+// beyond it the surface is meshed as it is, with a warning. On 10 real CAD
+// and scanned parts at K = 16 and 64 (2 ranks, the sweep's sizes) the
+// largest multiple was 12.5 (KiCad's heat sink HS-125, thin strips; DSUB-9
+// 8.9, the rest under 4). OpenFOAM's NACA0012 wing, all long span-wise
+// strips, at K = 7: one subdomain's segments would get 984,281 points, 34 x
+// (22,740 predicted tetrahedra + 6,119 surface points), the others 4-10 x
+// with all their points; TetGen meshed none of the refined ones in minutes.
+// So this bound only stops the extreme case; see TetMeshingOptions::
+// processorBudgetSeconds for the rest.
+constexpr double kMostPointsAddedPerExpected = 32.0;
 
 struct SurfaceRefinementOptions
 {
