@@ -196,6 +196,40 @@ void takeSplitFaces(const ptm::TetMeshingResult& r, ptm::SubdomainSurface& surfa
 // of the refinement (measured on CAD parts where TetGen stalls on some
 // refined surfaces). `surface` ends as the boundary of the mesh: refined,
 // and with the outer triangles TetGen split replaced (takeSplitFaces).
+// The processor time a subdomain's TetGen calls have left: fixed by the
+// first call that ran TetGen (its budget), then less what each call used.
+class TetGenBudget
+{
+public:
+  explicit TetGenBudget(const ptm::TetMeshingOptions& options)
+    : Given(options)
+  {
+  }
+  void Spend(const ptm::TetMeshingResult& r)
+  {
+    if (r.processorBudgetSeconds > 0)
+    {
+      this->Left = (this->Left < 0 ? r.processorBudgetSeconds : this->Left) - r.processorSeconds;
+    }
+  }
+  // whether one more call could start a run (the kernel's limit counts
+  // whole seconds); a call that would start none only replaces the error
+  bool CanPay() const { return this->Left < 0 || this->Left >= 1; }
+  ptm::TetMeshingOptions Options() const
+  {
+    ptm::TetMeshingOptions o = this->Given;
+    if (this->Left >= 0)
+    {
+      o.processorBudgetSeconds = this->Left;
+    }
+    return o;
+  }
+
+private:
+  ptm::TetMeshingOptions Given;
+  double Left = -1; // < 0: no call has run TetGen yet
+};
+
 MeshedSubdomain meshSubdomain(ptm::SubdomainSurface& surface, const ptm::TetMeshingOptions& options,
   const ptm::SurfaceRefinementOptions* refinement, const ptm::SizeField& field)
 {
@@ -214,36 +248,32 @@ MeshedSubdomain meshSubdomain(ptm::SubdomainSurface& surface, const ptm::TetMesh
     m.volumeChange = refined.volumeChange;
     m.deviation = refined.largestDeviation;
   }
-  // the fall-backs below share the first call's processor-time budget
-  // (TetMeshingOptions::processorBudgetSeconds): a surface on which TetGen
-  // stalls fails in bounded time instead of stalling in each of them
-  ptm::TetMeshingOptions left = options;
-  ptm::TetMeshingResult r = meshWithSizes(surface, left, field);
-  left.processorBudgetSeconds = r.processorBudgetSeconds - r.processorSeconds;
-  if (!r.ok && !r.outOfTime && refinement && m.pointsAdded > 0)
+  // the fall-backs below share the processor-time budget of the first call
+  // that ran TetGen (TetMeshingOptions::processorBudgetSeconds): a surface on
+  // which TetGen stalls fails in bounded time instead of stalling in each
+  TetGenBudget budget(options);
+  ptm::TetMeshingResult r = meshWithSizes(surface, options, field);
+  budget.Spend(r);
+  if (!r.ok && budget.CanPay() && refinement && m.pointsAdded > 0)
   {
     m.warnings.push_back("TetGen failed on the refined surface (" + r.error +
       "); meshed without boundary refinement");
     surface = unrefined;
     m.pointsAdded = 0;
     m.volumeChange = m.deviation = 0;
-    r = meshWithSizes(surface, left, field);
-    left.processorBudgetSeconds -= r.processorSeconds;
+    r = meshWithSizes(surface, budget.Options(), field);
+    budget.Spend(r);
   }
-  if (!r.ok && !r.outOfTime && options.qualityRefinement)
+  if (!r.ok && budget.CanPay() && options.qualityRefinement)
   {
     // TetGen 1.5's crashes are mostly assertions in its quality refinement
     // (oblong, K = 64 parallel planes: signal 6 in all three point orders
     // for one subdomain); without -q it still recovers the surface and
     // bounds the volume, so the run ends with a mesh and a warning.
-    ptm::TetMeshingOptions sizeOnly = left;
+    ptm::TetMeshingOptions sizeOnly = budget.Options();
     sizeOnly.qualityRefinement = false;
     ptm::TetMeshingResult plain = meshWithSizes(surface, sizeOnly, field);
-    if (plain.outOfTime)
-    {
-      r = std::move(plain);
-    }
-    else if (plain.ok)
+    if (plain.ok)
     {
       m.warnings.push_back("TetGen failed with quality refinement (" + r.error +
         "); meshed with the volume bound only (no -q), so this subdomain's tetrahedra are not "

@@ -10,6 +10,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <csignal>
+#include <cstdio>
 #include <poll.h>
 #include <sys/resource.h>
 #include <sys/types.h>
@@ -26,6 +27,7 @@
 #include <limits>
 #include <iterator>
 #include <map>
+#include <memory>
 #include <numeric>
 #include <new>
 #include <queue>
@@ -198,6 +200,10 @@ struct TimeLimits
   double budget = 0;        // processor seconds for all runs
   double spent = 0;         // used so far: the TetGen processes' user and system time
   int stopped = 0;          // runs stopped at a limit
+  // the last run stopped had recovered the boundary (TetGen's phases after
+  // it are refinement and optimisation): another input order, or the
+  // two-run fall-back, would be as slow (see runTetGenIsolated)
+  bool stoppedAfterRecovery = false;
   bool exhausted = false;   // a run was not started: less than a second of the budget was left
 
   // The processor-time limit of the next run, 0 if the budget cannot pay
@@ -238,6 +244,26 @@ bool waitReadable(int fd, double seconds)
   }
 }
 
+// What TetGen printed of its phases in a run's log (a temporary file its
+// process writes its standard output to, unbuffered, so a run the kernel
+// stops keeps every line): whether the run got past boundary recovery.
+// TetGen 1.5 prints "Removing exterior tetrahedra ..." right after
+// "Recovering boundaries...", then "Refining mesh...".
+bool pastBoundaryRecovery(std::FILE* log)
+{
+  if (!log || std::fseek(log, 0, SEEK_SET) != 0)
+  {
+    return false;
+  }
+  std::string text;
+  char buffer[4096];
+  for (std::size_t got; (got = std::fread(buffer, 1, sizeof(buffer), log)) > 0;)
+  {
+    text.append(buffer, got);
+  }
+  return text.find("Removing exterior tetrahedra") != std::string::npos;
+}
+
 constexpr const char* kBudgetSpent = "no TetGen run was started: the processor-time budget is spent";
 
 // Waits for the TetGen process `pid` to end; its wait status, and the
@@ -266,6 +292,7 @@ bool runTetGenIsolated(tetgenio& in, const std::string& switches, TimeLimits& li
   bool& timedOut, std::string& error, tetgenio* addin = nullptr)
 {
   timedOut = false;
+  limits.stoppedAfterRecovery = false;
   const double cpuSeconds = limits.nextCpu(), wallSeconds = limits.wall;
   if (cpuSeconds <= 0)
   {
@@ -281,6 +308,8 @@ bool runTetGenIsolated(tetgenio& in, const std::string& switches, TimeLimits& li
     error = "cannot create a pipe for the TetGen process";
     return false;
   }
+  // closed when the run ends, whichever way
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> phases(std::tmpfile(), &std::fclose);
   const pid_t pid = ::fork();
   if (pid < 0)
   {
@@ -313,6 +342,11 @@ bool runTetGenIsolated(tetgenio& in, const std::string& switches, TimeLimits& li
       }
       else
       {
+        if (phases && ::dup2(::fileno(phases.get()), STDOUT_FILENO) >= 0)
+        {
+          std::setvbuf(stdout, nullptr, _IONBF, 0);
+          behaviour.quiet = 0; // its phase lines only: nothing else changes
+        }
         tetrahedralize(&behaviour, &in, &out, addin);
       }
     }
@@ -352,6 +386,7 @@ bool runTetGenIsolated(tetgenio& in, const std::string& switches, TimeLimits& li
     int ignored = 0;
     limits.spent += reapChild(pid, ignored);
     ++limits.stopped;
+    limits.stoppedAfterRecovery = pastBoundaryRecovery(phases.get());
     std::ostringstream msg;
     msg << "TetGen did not finish within " << wallSeconds
         << " s and was stopped (TetGen 1.5 can loop for ever recovering the boundary of "
@@ -379,10 +414,13 @@ bool runTetGenIsolated(tetgenio& in, const std::string& switches, TimeLimits& li
     if (WIFSIGNALED(waitStatus) && WTERMSIG(waitStatus) == SIGXCPU)
     {
       ++limits.stopped;
+      limits.stoppedAfterRecovery = pastBoundaryRecovery(phases.get());
       std::ostringstream msg;
-      msg << "TetGen used more than " << std::ceil(cpuSeconds)
-          << " s of processor time and was stopped (TetGen 1.5 can loop for ever recovering the "
-             "boundary of nearly degenerate input, or refine for very long next to nearly flat triangles)";
+      msg << "TetGen used more than " << std::ceil(cpuSeconds) << " s of processor time and was stopped "
+          << (limits.stoppedAfterRecovery
+                 ? "refining the mesh, after recovering the boundary (TetGen 1.5 can refine for very long next "
+                   "to nearly flat triangles)"
+                 : "(TetGen 1.5 can loop for ever recovering the boundary of nearly degenerate input)");
       error = msg.str();
       timedOut = true;
     }
@@ -633,9 +671,10 @@ TimeLimits timeLimits(const TriangleSurface& s, const TetMeshingOptions& options
   return limits;
 }
 
-// Why the runs gave no mesh when the budget ran out: the budget, the runs,
-// the shape of the surface, and what to do.
-std::string budgetError(const TriangleSurface& s, const TimeLimits& limits, int attempts, const std::string& last)
+// Why the runs gave no mesh when one was stopped at its time limit: the
+// runs, the budget, the shape of the surface, and what to do.
+std::string stoppedRunsError(
+  const TriangleSurface& s, const TimeLimits& limits, int attempts, const std::string& last)
 {
   std::size_t flat = 0;
   for (const auto& t : s.triangles)
@@ -644,13 +683,14 @@ std::string budgetError(const TriangleSurface& s, const TimeLimits& limits, int 
   }
   std::ostringstream msg;
   msg.precision(3);
-  msg << "TetGen found no mesh within the processor-time budget of " << limits.budget << " s ("
-      << attempts << " runs, " << limits.stopped << " stopped at the limit of " << std::ceil(limits.cpu)
-      << " s per run, " << limits.spent << " s used; the last: " << last << "). "
+  msg << "TetGen found no mesh " << (limits.nextCpu() <= 0 ? "within the processor-time budget" : "in the time")
+      << " of this surface (" << attempts << " runs, " << limits.stopped << " stopped at the limit of "
+      << std::ceil(limits.cpu) << " s per run, " << limits.spent << " s used of a budget of " << limits.budget
+      << " s; the last: " << last << "). "
       << 100.0 * static_cast<double>(flat) / static_cast<double>(s.triangles.size())
-      << " % of this surface's triangles have an angle under 10 degrees, and TetGen 1.5 can take very long "
-         "next to such triangles: remesh the input (--remesh), use a larger size or fewer subdomains, or "
-         "raise the limit per run (TetGenTimeLimit, --tetgen-time-limit)";
+      << " % of its triangles have an angle under 10 degrees, and TetGen 1.5 can take very long next to such "
+         "triangles: remesh the input (--remesh), use a larger size or fewer subdomains, or raise the limit per "
+         "run (TetGenTimeLimit, --tetgen-time-limit)";
   return msg.str();
 }
 
@@ -758,7 +798,7 @@ TetGenRuns runInOrders(const TriangleSurface& s, const TetMeshingOptions& option
     runs.lastOrder = attempt;
     stalled = stalled || timedOut;
     const bool retry = !ran || (runs.status == 1 && runs.code == 2);
-    if (!retry || (stalled && runs.attempts >= kInputOrdersAfterAStall))
+    if (!retry || (stalled && runs.attempts >= kInputOrdersAfterAStall) || (timedOut && limits.stoppedAfterRecovery))
     {
       break;
     }
@@ -1290,7 +1330,8 @@ TetMeshingResult meshFromOrder(const TriangleSurface& s, const TetMeshingOptions
   r.switchesUsed = tetgenSwitches(options, volume);
   TetGenRuns runs = runTetGen(s, options, holes, r.switchesUsed, limits, firstOrder);
   r.switchesUsed += runs.tolerance;
-  if (!runs.failure.empty())
+  // (a run stopped while refining would be as slow refining in a second run)
+  if (!runs.failure.empty() && !limits.stoppedAfterRecovery)
   {
     TetGenRuns twoRuns = recoverThenRefine(s, options, holes, volume, limits, firstOrder);
     if (twoRuns.failure.empty() && twoRuns.status == 0)
@@ -1384,9 +1425,9 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
   r.processorSeconds = limits.spent;
   r.processorBudgetSeconds = limits.budget;
   r.outOfTime = !r.ok && limits.nextCpu() <= 0;
-  if (r.outOfTime)
+  if (!r.ok && limits.stopped > 0)
   {
-    r.error = budgetError(s, limits, attempts, r.error);
+    r.error = stoppedRunsError(s, limits, attempts, r.error);
   }
   if (r.ok && r.splitTriangles.empty())
   {

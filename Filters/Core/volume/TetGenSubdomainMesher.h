@@ -19,7 +19,9 @@
 // processor-time limit, which is stopped) it runs again with the points
 // reversed, then shuffled, then with the facets shuffled too (fixed seeds;
 // six orders, and six more where none stalled), all within one
-// processor-time budget per surface. If all of them fail, the surface
+// processor-time budget per surface. A run stopped after it had recovered
+// the boundary (its phase lines say so) was refining: other orders would be
+// as slow, so it ends the runs. If all of them fail, the surface
 // is recovered in one run without refinement and the mesh refined in a
 // second (-rY). Flat tetrahedra TetGen leaves on the surface are then
 // repaired in small cavities meshed again (TetMeshingOptions::
