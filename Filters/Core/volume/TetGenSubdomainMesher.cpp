@@ -278,6 +278,70 @@ double reapChild(pid_t pid, int& waitStatus)
   return seconds(usage.ru_utime) + seconds(usage.ru_stime);
 }
 
+// The TetGen process of runTetGenIsolated: meshes `in` with `switches`
+// under the processor-time limit, writes TetGen's phase lines to `phases`
+// (if any) and the result to `fd`, and ends.
+[[noreturn]] void runTetGenChild(tetgenio& in, const std::string& switches, double cpuSeconds, std::FILE* phases,
+  int fd, tetgenio* addin)
+{
+  std::signal(SIGSEGV, SIG_DFL);
+  std::signal(SIGABRT, SIG_DFL);
+  std::signal(SIGBUS, SIG_DFL);
+  std::signal(SIGXCPU, SIG_DFL);
+  // SIGXCPU at the soft limit, SIGKILL a second later
+  const rlim_t cpu = static_cast<rlim_t>(std::ceil(cpuSeconds));
+  const rlimit limit{ cpu, cpu + 1 };
+  ::setrlimit(RLIMIT_CPU, &limit);
+  ChildHeader h;
+  tetgenio out;
+  try
+  {
+    tetgenbehavior behaviour;
+    std::vector<char> text(switches.begin(), switches.end());
+    text.push_back('\0');
+    if (!behaviour.parse_commandline(text.data()))
+    {
+      h.status = 3;
+    }
+    else
+    {
+      if (phases && ::dup2(::fileno(phases), STDOUT_FILENO) >= 0)
+      {
+        std::setvbuf(stdout, nullptr, _IONBF, 0);
+        behaviour.quiet = 0; // its phase lines only: nothing else changes
+      }
+      tetrahedralize(&behaviour, &in, &out, addin);
+    }
+  }
+  catch (int c)
+  {
+    h.status = 1;
+    h.code = c;
+  }
+  catch (const std::bad_alloc&)
+  {
+    h.status = 2;
+  }
+  catch (...)
+  {
+    h.status = 1;
+    h.code = 2;
+  }
+  if (h.status == 0)
+  {
+    h.points = out.numberofpoints;
+    h.tets = out.numberoftetrahedra;
+  }
+  bool ok = writeAll(fd, &h, sizeof(h));
+  if (ok && h.status == 0)
+  {
+    ok = writeAll(fd, out.pointlist, sizeof(REAL) * 3 * static_cast<std::size_t>(h.points)) &&
+      writeAll(fd, out.tetrahedronlist, sizeof(int) * 4 * static_cast<std::size_t>(h.tets));
+  }
+  ::close(fd);
+  ::_exit(ok ? 0 : 1);
+}
+
 // Runs TetGen in a child process: libtet 1.5 frees its memory in
 // terminatetetgen() and again in the destructor while the int it throws
 // unwinds, so every TetGen failure would otherwise crash the whole
@@ -321,62 +385,7 @@ bool runTetGenIsolated(tetgenio& in, const std::string& switches, TimeLimits& li
   if (pid == 0)
   {
     ::close(fds[0]);
-    std::signal(SIGSEGV, SIG_DFL);
-    std::signal(SIGABRT, SIG_DFL);
-    std::signal(SIGBUS, SIG_DFL);
-    std::signal(SIGXCPU, SIG_DFL);
-    // SIGXCPU at the soft limit, SIGKILL a second later
-    const rlim_t cpu = static_cast<rlim_t>(std::ceil(cpuSeconds));
-    const rlimit limit{ cpu, cpu + 1 };
-    ::setrlimit(RLIMIT_CPU, &limit);
-    ChildHeader h;
-    tetgenio out;
-    try
-    {
-      tetgenbehavior behaviour;
-      std::vector<char> text(switches.begin(), switches.end());
-      text.push_back('\0');
-      if (!behaviour.parse_commandline(text.data()))
-      {
-        h.status = 3;
-      }
-      else
-      {
-        if (phases && ::dup2(::fileno(phases.get()), STDOUT_FILENO) >= 0)
-        {
-          std::setvbuf(stdout, nullptr, _IONBF, 0);
-          behaviour.quiet = 0; // its phase lines only: nothing else changes
-        }
-        tetrahedralize(&behaviour, &in, &out, addin);
-      }
-    }
-    catch (int c)
-    {
-      h.status = 1;
-      h.code = c;
-    }
-    catch (const std::bad_alloc&)
-    {
-      h.status = 2;
-    }
-    catch (...)
-    {
-      h.status = 1;
-      h.code = 2;
-    }
-    if (h.status == 0)
-    {
-      h.points = out.numberofpoints;
-      h.tets = out.numberoftetrahedra;
-    }
-    bool ok = writeAll(fds[1], &h, sizeof(h));
-    if (ok && h.status == 0)
-    {
-      ok = writeAll(fds[1], out.pointlist, sizeof(REAL) * 3 * static_cast<std::size_t>(h.points)) &&
-        writeAll(fds[1], out.tetrahedronlist, sizeof(int) * 4 * static_cast<std::size_t>(h.tets));
-    }
-    ::close(fds[1]);
-    ::_exit(ok ? 0 : 1);
+    runTetGenChild(in, switches, cpuSeconds, phases.get(), fds[1], addin);
   }
   ::close(fds[1]);
   if (!waitReadable(fds[0], wallSeconds))
