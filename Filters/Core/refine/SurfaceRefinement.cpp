@@ -1,6 +1,5 @@
 #include "SurfaceRefinement.h"
 
-
 #include "InterfaceTriangulation.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -673,10 +672,7 @@ bool meshFacet(const SubdomainSurface& s, const Facet& facet, const std::vector<
   return true;
 }
 /// @}
-} // namespace
 
-namespace
-{
 // The tetrahedra the volume bound (a regular tetrahedron of edge `size`)
 // predicts for the closed surface `s`: 2 x its volume / the bound.
 double expectedTetrahedra(const SubdomainSurface& s, double size)
@@ -755,7 +751,8 @@ SurfaceRefinementResult refineSubdomainSurface(
   const SegmentPoints split = splitSegments(refined, across, label, options);
   const double expected = expectedTetrahedra(surface, options.size);
   const double factor = mostPointsFactor(options.segmentSpacingFloor);
-  const std::size_t most = static_cast<std::size_t>(factor * (expected + static_cast<double>(surface.surface.points.size())));
+  const std::size_t most =
+    static_cast<std::size_t>(factor * (expected + static_cast<double>(surface.surface.points.size())));
   const std::size_t onSegments = refined.surface.points.size() - surface.surface.points.size();
   if (onSegments > most)
   {
