@@ -284,7 +284,7 @@ MeshedSubdomain meshSubdomain(ptm::SubdomainSurface& surface, const ptm::TetMesh
   if (!r.ok)
   {
     m.error = r.error;
-    if (r.outOfTime)
+    if (r.processorBudgetSeconds > 0) // TetGen ran: its surface tells why it was slow or failed
     {
       m.error += " (the surface TetGen was given: " + std::to_string(surface.surface.triangles.size()) +
         " triangles, " + std::to_string(m.pointsAdded) + " points added by the boundary refinement)";

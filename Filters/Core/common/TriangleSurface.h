@@ -49,5 +49,14 @@ inline double meanEdgeLength(const TriangleSurface& surface)
   }
   return surface.triangles.empty() ? 0.0 : edgeSum / (3.0 * static_cast<double>(surface.triangles.size()));
 }
+
+// How many triangles have an angle under `radians`: the long thin
+// triangles that make TetGen slow and the boundary refinement's strips dense.
+inline std::size_t trianglesWithAngleUnder(const TriangleSurface& surface, double radians)
+{
+  return static_cast<std::size_t>(std::count_if(surface.triangles.begin(), surface.triangles.end(),
+    [&](const Triangle& t)
+    { return triangleMinimumAngle(surface.points[t[0]], surface.points[t[1]], surface.points[t[2]]) < radians; }));
+}
 } // namespace ptm
 #endif

@@ -697,21 +697,12 @@ double mostPointsFactor(double floor)
 std::string tooManyPointsWarning(
   std::size_t onSegments, double factor, double expected, const SubdomainSurface& s)
 {
-  std::size_t thin = 0;
-  for (std::size_t t = 0; t < s.surface.triangles.size(); ++t)
-  {
-    const Triangle& tri = s.surface.triangles[t];
-    thin += s.otherSide[t] < 0 &&
-        triangleMinimumAngle(s.surface.points[tri[0]], s.surface.points[tri[1]], s.surface.points[tri[2]]) <
-          10.0 * kPi / 180.0
-      ? 1
-      : 0;
-  }
+  const std::size_t thin = trianglesWithAngleUnder(s.surface, 10.0 * kPi / 180.0);
   std::ostringstream msg;
   msg << "boundary refinement skipped: it would put " << onSegments << " points on the edges of the outer "
       << "boundary, more than " << factor << " x the " << static_cast<long long>(expected)
       << " tetrahedra the size predicts here plus the " << s.surface.points.size() << " surface points ("
-      << thin << " outer triangles have an angle under 10 degrees: long thin input triangles are split "
+      << thin << " of its triangles have an angle under 10 degrees: long thin input triangles are split "
       << "at their width); the surface is meshed as it is. Remeshing the input (--remesh) avoids this";
   return msg.str();
 }

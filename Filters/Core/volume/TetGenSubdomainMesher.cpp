@@ -204,7 +204,6 @@ struct TimeLimits
   // it are refinement and optimisation): another input order, or the
   // two-run fall-back, would be as slow (see runTetGenIsolated)
   bool stoppedAfterRecovery = false;
-  bool exhausted = false;   // a run was not started: less than a second of the budget was left
 
   // The processor-time limit of the next run, 0 if the budget cannot pay
   // for one (the kernel's limit counts whole seconds).
@@ -360,7 +359,6 @@ bool runTetGenIsolated(tetgenio& in, const std::string& switches, TimeLimits& li
   const double cpuSeconds = limits.nextCpu(), wallSeconds = limits.wall;
   if (cpuSeconds <= 0)
   {
-    limits.exhausted = true;
     error = kBudgetSpent;
     status = 1;
     code = 0;
@@ -685,11 +683,7 @@ TimeLimits timeLimits(const TriangleSurface& s, const TetMeshingOptions& options
 std::string stoppedRunsError(
   const TriangleSurface& s, const TimeLimits& limits, int attempts, const std::string& last)
 {
-  std::size_t flat = 0;
-  for (const auto& t : s.triangles)
-  {
-    flat += triangleMinimumAngle(s.points[t[0]], s.points[t[1]], s.points[t[2]]) < 10.0 * kPi / 180.0 ? 1 : 0;
-  }
+  const std::size_t flat = trianglesWithAngleUnder(s, 10.0 * kPi / 180.0);
   std::ostringstream msg;
   msg.precision(3);
   msg << "TetGen found no mesh " << (limits.nextCpu() <= 0 ? "within the processor-time budget" : "in the time")
@@ -781,7 +775,7 @@ TetGenRuns runInOrders(const TriangleSurface& s, const TetMeshingOptions& option
   {
     if (limits.nextCpu() <= 0)
     {
-      limits.exhausted = true; // the last run's failure stays the one reported
+      // the last run's failure stays the one reported
       runs.failure = runs.failure.empty() ? kBudgetSpent : runs.failure;
       break;
     }
