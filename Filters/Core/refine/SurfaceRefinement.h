@@ -48,12 +48,11 @@ constexpr double kSmallestSegmentSpacingFloor = 1.0 / 1024;
 // and scanned parts at K = 16 and 64 (2 ranks, the sweep's sizes) the
 // largest multiple was 12.5 (KiCad's heat sink HS-125 at the automatic
 // size, thin strips; DSUB-9 8.9, the rest at most 4.1). OpenFOAM's
-// NACA0012 wing, all long span-wise
-// strips, at K = 7: one subdomain's segments would get 984,281 points, 34 x
-// (22,740 predicted tetrahedra + 6,119 surface points), the others 4-10 x
-// with all their points; TetGen meshed none of the refined ones in minutes.
-// So this bound only stops the extreme case; see TetMeshingOptions::
-// processorBudgetSeconds for the rest.
+// NACA0012 wing, all long span-wise strips, at K = 7: one subdomain's
+// segments would get 984,281 points, 34 x (22,740 predicted tetrahedra +
+// 6,119 surface points), the others 4-10 x with all their points; TetGen
+// meshed none of the refined ones in minutes. So this bound only stops the
+// extreme case; see TetMeshingOptions::processorBudgetSeconds for the rest.
 constexpr double kMostPointsAddedPerExpected = 32.0;
 
 struct SurfaceRefinementOptions
