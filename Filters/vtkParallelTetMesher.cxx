@@ -190,12 +190,6 @@ void takeSplitFaces(const ptm::TetMeshingResult& r, ptm::SubdomainSurface& surfa
   surface = std::move(kept);
 }
 
-// Refines `surface` (unless `refinement` is null) and meshes it. Where
-// TetGen fails on the refined surface, the surface as it came is meshed
-// instead, with a warning: a subdomain TetGen can mesh must not fail because
-// of the refinement (measured on CAD parts where TetGen stalls on some
-// refined surfaces). `surface` ends as the boundary of the mesh: refined,
-// and with the outer triangles TetGen split replaced (takeSplitFaces).
 // The processor time a subdomain's TetGen calls have left: fixed by the
 // first call that ran TetGen (its budget), then less what each call used.
 class TetGenBudget
@@ -214,7 +208,7 @@ public:
   }
   // whether one more call could start a run (the kernel's limit counts
   // whole seconds); a call that would start none only replaces the error
-  bool CanPay() const { return this->Left < 0 || this->Left >= 1; }
+  bool CanPay() const { return this->Left < 0 || this->Left >= ptm::kShortestRunSeconds; }
   ptm::TetMeshingOptions Options() const
   {
     ptm::TetMeshingOptions o = this->Given;
@@ -230,6 +224,12 @@ private:
   double Left = -1; // < 0: no call has run TetGen yet
 };
 
+// Refines `surface` (unless `refinement` is null) and meshes it. Where
+// TetGen fails on the refined surface, the surface as it came is meshed
+// instead, with a warning: a subdomain TetGen can mesh must not fail because
+// of the refinement (measured on CAD parts where TetGen stalls on some
+// refined surfaces). `surface` ends as the boundary of the mesh: refined,
+// and with the outer triangles TetGen split replaced (takeSplitFaces).
 MeshedSubdomain meshSubdomain(ptm::SubdomainSurface& surface, const ptm::TetMeshingOptions& options,
   const ptm::SurfaceRefinementOptions* refinement, const ptm::SizeField& field)
 {

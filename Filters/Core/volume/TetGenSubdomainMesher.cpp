@@ -210,7 +210,7 @@ struct TimeLimits
   double nextCpu() const
   {
     const double left = std::min(cpu, budget - spent);
-    return left >= 1.0 ? left : 0.0;
+    return left >= kShortestRunSeconds ? left : 0.0;
   }
 };
 

@@ -49,6 +49,9 @@ constexpr int kInputOrdersAfterAStall = 6;
 // more than the documented stall that another order mends needs
 // (tetgen_stall_in_canonical_order.off: stopped once, then meshed).
 constexpr double kBudgetInRunLimits = 4.0;
+// No TetGen run is started with less processor time than this: the
+// kernel's limit (RLIMIT_CPU) counts whole seconds.
+constexpr double kShortestRunSeconds = 1.0;
 
 struct TetMeshingOptions
 {
