@@ -171,10 +171,12 @@ TriangleSurface merged(const TriangleSurface& a, const TriangleSurface& b)
 
 double signedVolume(const TriangleSurface& s)
 {
+  // about a corner, not (0, 0, 0), so surfaces far from the origin measure right
+  const Vec3 o = s.triangles.empty() ? Vec3{ 0, 0, 0 } : s.points[s.triangles[0][0]];
   double v = 0;
   for (const auto& t : s.triangles)
   {
-    v += dot(s.points[t[0]], cross(s.points[t[1]], s.points[t[2]]));
+    v += dot(s.points[t[0]] - o, cross(s.points[t[1]] - o, s.points[t[2]] - o));
   }
   return v / 6.0;
 }

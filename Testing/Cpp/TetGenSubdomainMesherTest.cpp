@@ -117,6 +117,18 @@ TEST(TetGenSubdomainMesher, BoxAndBallKeepTheirSurfaceExactly)
   EXPECT_NE(r.switchesUsed.find("pY"), std::string::npos);
 }
 
+// A part far from the coordinate origin, as parts in assembly or survey
+// coordinates are: a unit ball 10^4 of its radii away. Its volume taken
+// about (0, 0, 0) came out 3e-5 off, so the check that TetGen's tetrahedra
+// fill the surface refused every mesh (session 31).
+TEST(TetGenSubdomainMesher, APartFarFromTheOriginIsMeshed)
+{
+  const TriangleSurface ball = icosphere({ 1e4, -7e3, 3e3 }, 1.0, 3);
+  const TetMeshingResult r = meshClosedSurface(ball, {});
+  ASSERT_TRUE(r.ok) << r.error;
+  expectConformingMesh(ball, r, "ball far from the origin");
+}
+
 // The mesher's last resort: no -q, the surface still kept and the volume
 // bound still met (on a surface of matching resolution, as below), only
 // without quality refinement.

@@ -182,6 +182,31 @@ TEST(VolumeBalancedDecomposition, AxisDirectionsAndLongestExtent)
   }
 }
 
+// Two balls 10^6 of their radii from the coordinate origin: volumes taken
+// about (0, 0, 0) lost every digit there, and the cutter refused the part
+// ("subdomain 0 encloses no volume"; at 10^4 TetGen's volume check refused
+// the subdomains). Each part's volume is now taken about one of its corners.
+TEST(VolumeBalancedDecomposition, APartFarFromTheOriginKeepsItsVolume)
+{
+  const TriangleSurface two =
+    merged(icosphere({ 1e6, -7e5, 3e5 }, 1.0, 3), icosphere({ 1e6 + 3, -7e5, 3e5 }, 0.5, 3));
+  for (CutStrategy strategy : { CutStrategy::RecursiveBisection, CutStrategy::ParallelPlanes })
+  {
+    DecompositionOptions options;
+    options.numberOfSubdomains = 5;
+    options.strategy = strategy;
+    const DecompositionResult r = decomposeVolumeBalanced(two, options);
+    ASSERT_TRUE(r.ok) << r.error;
+    double total = 0;
+    for (double v : r.subdomainVolume)
+    {
+      EXPECT_GT(v, 0.0);
+      total += v;
+    }
+    EXPECT_NEAR(total / signedVolume(two), 1.0, 1e-9);
+  }
+}
+
 TEST(VolumeBalancedDecomposition, UnitCubeCutExactlyThroughVerticesAndEdges)
 {
   // planes at x = 0.25, 0.5, 0.75 pass through grid vertices and along edges

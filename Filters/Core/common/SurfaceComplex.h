@@ -63,7 +63,10 @@ bool chainLoops(const std::vector<DirectedEdge>& edges, std::vector<std::vector<
 
 // Signed volume of every subdomain by the divergence theorem over its closed
 // boundary: surface triangles, interface triangles and interface regions
-// (a region contributes origin . vectorArea / 3 with its plane's origin).
+// (a region contributes (origin - o) . vectorArea / 3 with its plane's
+// origin). A label far from (0, 0, 0) has it taken about its own lowest
+// corner o, so a part far from the origin keeps its volume
+// (sixTimesVolumeAbout; SurfaceComplex.cpp says where "far" begins).
 std::vector<double> subdomainVolumes(const SurfaceComplex& complex);
 
 // Signed volume enclosed by the faces carrying one label (a subdomain, or a
@@ -73,8 +76,11 @@ double labelVolume(const SurfaceComplex& complex, int label);
 // The points of a region's boundary, each once, in increasing index order.
 std::vector<Index> regionPoints(const InterfaceRegion& region);
 
-// Vector area (1/2 sum p x q) of a set of directed boundary edges.
-Vec3 vectorArea(const std::vector<Vec3>& points, const std::vector<DirectedEdge>& edges);
+// Vector area (1/2 sum (p - about) x (q - about)) of a set of directed
+// boundary edges; for closed loops the same about any point, but accurate
+// only about one near them.
+Vec3 vectorArea(
+  const std::vector<Vec3>& points, const std::vector<DirectedEdge>& edges, const Vec3& about = Vec3{ 0, 0, 0 });
 
 // The closed surface of subdomain s: its triangles, oriented outward (only
 // triangles; call after the interfaces are triangulated). Point indices stay

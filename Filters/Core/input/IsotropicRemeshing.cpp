@@ -117,16 +117,6 @@ void keepLabelBorders(const CgalMesh& mesh, const std::vector<long long>& labels
   }
 }
 
-double signedVolume(const TriangleSurface& s)
-{
-  double v = 0;
-  for (const Triangle& t : s.triangles)
-  {
-    v += dot(s.points[t[0]], cross(s.points[t[1]], s.points[t[2]]));
-  }
-  return v / 6.0;
-}
-
 std::string optionError(const RemeshOptions& o)
 {
   if (!(o.targetEdgeLength >= 0) || !std::isfinite(o.targetEdgeLength))
@@ -250,7 +240,7 @@ bool remeshOnce(
   }
   const auto remeshed = Clock::now();
   r.remeshSeconds += std::chrono::duration<double>(remeshed - start).count();
-  r.volumeChange = inputVolume != 0 ? (signedVolume(r.surface) - inputVolume) / inputVolume : 0;
+  r.volumeChange = inputVolume != 0 ? (enclosedVolume(r.surface) - inputVolume) / inputVolume : 0;
   r.remeshToInput = r.inputToRemesh = r.sampleSpacing = 0;
   if (options.maximumVolumeChange > 0 && std::fabs(r.volumeChange) > options.maximumVolumeChange)
   {
@@ -303,7 +293,7 @@ RemeshResult remeshSurface(const TriangleSurface& input, const RemeshOptions& gi
     options.targetEdgeLength = meanEdgeLength(input);
   }
   r.boundingBoxDiagonal = boundingBoxDiagonal(input.points);
-  const double inputVolume = signedVolume(input);
+  const double inputVolume = enclosedVolume(input);
   for (r.attempts = 1;; ++r.attempts, options.targetEdgeLength /= 2)
   {
     r.error.clear();

@@ -267,12 +267,12 @@ OrientationResult orientShells(TriangleSurface& s)
   std::vector<double> volume(shellCount, 0.0);
   for (int k = 0; k < shellCount; ++k)
   {
-    // volume relative to a point of the shell, for accuracy far from the origin
+    // about a point of the shell, for accuracy far from the origin
     const Vec3 o = s.points[s.triangles[shellTriangles[k][0]][0]];
     for (Index t : shellTriangles[k])
     {
       const auto& tri = s.triangles[t];
-      volume[k] += dot(s.points[tri[0]] - o, cross(s.points[tri[1]] - o, s.points[tri[2]] - o));
+      volume[k] += sixTimesVolumeAbout(o, s.points[tri[0]], s.points[tri[1]], s.points[tri[2]]);
     }
     volume[k] /= 6.0;
   }

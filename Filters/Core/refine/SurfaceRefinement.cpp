@@ -570,16 +570,16 @@ private:
 // the subdomain's volume.
 double outerVolume(const SubdomainSurface& s)
 {
-  double sixTimes = 0;
+  std::vector<Triangle> outer;
   for (std::size_t t = 0; t < s.surface.triangles.size(); ++t)
   {
     if (s.otherSide[t] < 0)
     {
-      const Triangle& tri = s.surface.triangles[t];
-      sixTimes += dot(s.surface.points[tri[0]], cross(s.surface.points[tri[1]], s.surface.points[tri[2]]));
+      outer.push_back(s.surface.triangles[t]);
     }
   }
-  return sixTimes / 6.0;
+  // about the first point, which the refinement keeps (new points go after)
+  return s.surface.points.empty() ? 0.0 : volumeAbout(s.surface.points[0], s.surface.points, outer);
 }
 
 double outerMinimumAngle(const SubdomainSurface& s)
@@ -677,12 +677,7 @@ bool meshFacet(const SubdomainSurface& s, const Facet& facet, const std::vector<
 // predicts for the closed surface `s`: 2 x its volume / the bound.
 double expectedTetrahedra(const SubdomainSurface& s, double size)
 {
-  double sixTimes = 0;
-  for (const Triangle& t : s.surface.triangles)
-  {
-    sixTimes += dot(s.surface.points[t[0]], cross(s.surface.points[t[1]], s.surface.points[t[2]]));
-  }
-  return 2.0 * std::fabs(sixTimes / 6.0) / (size * size * size / (6.0 * std::sqrt(2.0)));
+  return 2.0 * std::fabs(enclosedVolume(s.surface)) / (size * size * size / (6.0 * std::sqrt(2.0)));
 }
 
 // The most points the refinement may put on one subdomain's segments, per

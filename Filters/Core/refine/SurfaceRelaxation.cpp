@@ -62,19 +62,19 @@ Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const V
   return a + (vb * denom) * ab + (vc * denom) * ac;
 }
 
-// Enclosed volume of the outer surface (triangles facing the outside).
-double enclosedVolume(const SurfaceComplex& c)
+// Enclosed volume of the outer surface (triangles facing the outside), a
+// closed surface: about one of its corners (sixTimesVolumeAbout).
+double outerSurfaceVolume(const SurfaceComplex& c)
 {
-  double v = 0;
+  std::vector<Triangle> outer;
   for (std::size_t t = 0; t < c.triangles.size(); ++t)
   {
     if (c.trianglePairs[t][1] == -1)
     {
-      const Triangle& f = c.triangles[t];
-      v += dot(c.points[f[0]], cross(c.points[f[1]], c.points[f[2]])) / 6.0;
+      outer.push_back(c.triangles[t]);
     }
   }
-  return v;
+  return outer.empty() ? 0.0 : volumeAbout(c.points[outer.front()[0]], c.points, outer);
 }
 
 // Largest distance from the vertices and triangle centroids of `from` to
@@ -1034,7 +1034,7 @@ TriangleQualityFigures triangleQuality(const SurfaceComplex& c)
 SurfaceChangeFigures surfaceChange(const SurfaceComplex& before, const SurfaceComplex& after)
 {
   SurfaceChangeFigures f;
-  const double v0 = enclosedVolume(before), v1 = enclosedVolume(after);
+  const double v0 = outerSurfaceVolume(before), v1 = outerSurfaceVolume(after);
   f.volumeChange = v0 != 0 ? (v1 - v0) / v0 : 0;
   const std::vector<double> s0 = subdomainVolumes(before), s1 = subdomainVolumes(after);
   for (std::size_t s = 0; s < s0.size() && s < s1.size(); ++s)

@@ -607,14 +607,12 @@ bool cavityHoles(const TriangleSurface& s, std::vector<Vec3>& holes)
 {
   for (const auto& shell : shells(s))
   {
-    double v = 0;
-    const Vec3 o = s.points[s.triangles[shell.front()][0]];
+    std::vector<Triangle> triangles;
     for (Index t : shell)
     {
-      const auto& tri = s.triangles[t];
-      v += dot(s.points[tri[0]] - o, cross(s.points[tri[1]] - o, s.points[tri[2]] - o));
+      triangles.push_back(s.triangles[t]);
     }
-    if (v < 0)
+    if (volumeAbout(s.points[triangles.front()[0]], s.points, triangles) < 0)
     {
       Vec3 hole;
       if (!holePoint(s, shell, hole))
@@ -661,11 +659,7 @@ std::string tetgenSwitches(const TetMeshingOptions& options, double volume, char
 // stopped it in every input order and fall-back: the run failed.
 TimeLimits timeLimits(const TriangleSurface& s, const TetMeshingOptions& options, double volume)
 {
-  double expectedVolume = 0;
-  for (const auto& t : s.triangles)
-  {
-    expectedVolume += dot(s.points[t[0]], cross(s.points[t[1]], s.points[t[2]])) / 6.0;
-  }
+  const double expectedVolume = enclosedVolume(s);
   const double expectedTets = estimateTetMesh(std::fabs(expectedVolume), volume).tetrahedra +
     4.0 * static_cast<double>(s.triangles.size());
   TimeLimits limits;
@@ -1273,15 +1267,11 @@ std::string boundaryError(const TriangleSurface& s, const std::vector<char>& spl
 // is refused like a crash, so the caller's fall-backs run.
 std::string volumeError(const TriangleSurface& s, const TetMesh& mesh)
 {
-  double enclosed = 0, filled = 0;
-  for (const auto& t : s.triangles)
-  {
-    enclosed += dot(s.points[t[0]], cross(s.points[t[1]], s.points[t[2]])) / 6.0;
-  }
+  const double enclosed = enclosedVolume(s);
+  double filled = 0;
   for (const auto& t : mesh.tets)
   {
-    const Vec3& a = mesh.points[t[0]];
-    filled += dot(mesh.points[t[1]] - a, cross(mesh.points[t[2]] - a, mesh.points[t[3]] - a)) / 6.0;
+    filled += sixTimesVolumeAbout(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], mesh.points[t[3]]) / 6.0;
   }
   if (!(std::fabs(filled - std::fabs(enclosed)) <= 1e-9 * std::fabs(enclosed)))
   {
