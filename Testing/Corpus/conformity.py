@@ -141,7 +141,8 @@ def check(pvtu, input_stats):
             problems.append("boundary faces (%d) differ from %s (%d)" % (len(mine), os.path.basename(bfile), len(ref)))
     bp = table[boundary]
     area = 0.5 * np.linalg.norm(np.cross(bp[:, 1] - bp[:, 0], bp[:, 2] - bp[:, 0]), axis=1).sum()
-    enclosed = np.einsum("ij,ij->i", bp[:, 0], np.cross(bp[:, 1], bp[:, 2])).sum() / 6.0
+    bo = bp - bp[0, 0]  # about a corner: far from (0, 0, 0) the terms would swamp the volume
+    enclosed = np.einsum("ij,ij->i", bo[:, 0], np.cross(bo[:, 1], bo[:, 2])).sum() / 6.0
     volume = volumes.sum()
     area_error = abs(area - input_stats["area"]) / input_stats["area"]
     if area_error > AREA_TOLERANCE:

@@ -133,7 +133,8 @@ def triangle_angles(p):
 def stats(path):
     points, tris = read_off(path)
     p = points[tris]
-    volume = np.einsum("ij,ij->i", p[:, 0], np.cross(p[:, 1], p[:, 2])).sum() / 6.0
+    o = p - p[0, 0]  # about a corner: far from (0, 0, 0) the terms would swamp the volume
+    volume = np.einsum("ij,ij->i", o[:, 0], np.cross(o[:, 1], o[:, 2])).sum() / 6.0
     area = 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
     angles = triangle_angles(p).min(axis=1)
     edges = np.linalg.norm(p - p[:, [1, 2, 0]], axis=2)

@@ -6,7 +6,9 @@ from vtkmodules.vtkCommonDataModel import vtkDataSetAttributes
 
 
 def enclosed_volume(points, triangles):
-    p = points[triangles]
+    # about a corner of the surface, not (0, 0, 0): far from the origin the
+    # terms would grow as the cube of the distance and swamp the volume
+    p = points[triangles] - points[triangles[0, 0]]
     return np.einsum("ij,ij->i", p[:, 0], np.cross(p[:, 1], p[:, 2])).sum() / 6.0
 
 
