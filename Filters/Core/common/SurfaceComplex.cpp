@@ -66,9 +66,9 @@ Vec3 vectorArea(const std::vector<Vec3>& points, const std::vector<DirectedEdge>
 namespace
 {
 // A label this many of its bounding-box diagonals from (0, 0, 0), or
-// nearer, has its volume taken about (0, 0, 0), as before session 31: the
-// terms then lose at most about 16^3 of their last bits, and the cuts stay
-// as they were measured. Taken about a corner everywhere, netgen's part1 at
+// nearer, has its volume taken about (0, 0, 0), as before session 31: its
+// round-off is then at most about 16^3 times that about a corner, and the
+// cuts stay as they were measured. Taken about a corner everywhere, netgen's part1 at
 // K = 16 (test_pipeline) was cut a little differently, and the interface
 // mesher left 2 triangles under its bound away from the boundary on it (a
 // weakness of that mesher, not investigated).

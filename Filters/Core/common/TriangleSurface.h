@@ -37,8 +37,8 @@ struct TriangleSurface
 // Six times the signed volume of the tetrahedron (o, a, b, c). Summed over
 // the triangles of a closed surface it is six times the enclosed volume
 // whatever o is, but each term grows as the cube of the distance to o while
-// the volume does not, so o must be a point of the surface, not (0, 0, 0):
-// two spheres of radius 1 and 0.5 centred 10^4 from the origin came out
+// the volume does not, so o should be a point of the surface, not a far
+// (0, 0, 0): two spheres of radius 1 and 0.5 centred 10^4 from the origin came out
 // 3e-5 off that way (TetGen's volume check then refused every mesh), and
 // at 10^6 the cutter found no volume at all (session 31).
 inline double sixTimesVolumeAbout(const Vec3& o, const Vec3& a, const Vec3& b, const Vec3& c)
