@@ -27,8 +27,9 @@ CASES.append(("ball.off", 3, "ParallelPlanes", "X", "KeepSurface"))
 CASES.append(("bracket.stl", 4, "RecursiveBisection", "Inertia", "SmoothSurface"))
 CASES.append(("ball.stl", 4, "RecursiveBisection", "Inertia", "SmoothSurface"))
 # the ball moved 1000 of its radii from the origin, as parts in assembly or
-# survey coordinates are: volumes taken about (0, 0, 0) came out 1e-6 off
-# there, and until session 31 TetGen's volume check refused every subdomain
+# survey coordinates are: volumes taken about (0, 0, 0) came out more than
+# 1e-9 off there, so until session 31 TetGen's volume check refused every
+# subdomain
 CASES.append(("regression/ball_far_from_origin.off", 5, "RecursiveBisection", "Inertia", "KeepSurface"))
 # (surface, K, strategy): an interface size of the bounding-box diagonal / 40,
 # finer than the surface's own edges, so that the contour subdivision (on by

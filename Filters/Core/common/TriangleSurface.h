@@ -46,9 +46,8 @@ inline double sixTimesVolumeAbout(const Vec3& o, const Vec3& a, const Vec3& b, c
   return dot(a - o, cross(b - o, c - o));
 }
 
-// The signed volume the triangles `which` of `points` enclose (all of a
-// closed surface, or the part of one whose rest is the same in the volumes
-// compared), taken about the point `o` (see sixTimesVolumeAbout).
+// The signed volume the triangles `which` of `points` (a closed surface)
+// enclose, taken about the point `o` (see sixTimesVolumeAbout).
 template <typename Triangles>
 double volumeAbout(const Vec3& o, const std::vector<Vec3>& points, const Triangles& which)
 {

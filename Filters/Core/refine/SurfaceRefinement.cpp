@@ -570,16 +570,22 @@ private:
 // the subdomain's volume.
 double outerVolume(const SubdomainSurface& s)
 {
-  std::vector<Triangle> outer;
+  if (s.surface.points.empty())
+  {
+    return 0.0;
+  }
+  // about the first point, which the refinement keeps (new points go after)
+  const std::vector<Vec3>& p = s.surface.points;
+  double sixTimes = 0;
   for (std::size_t t = 0; t < s.surface.triangles.size(); ++t)
   {
     if (s.otherSide[t] < 0)
     {
-      outer.push_back(s.surface.triangles[t]);
+      const Triangle& tri = s.surface.triangles[t];
+      sixTimes += sixTimesVolumeAbout(p[0], p[tri[0]], p[tri[1]], p[tri[2]]);
     }
   }
-  // about the first point, which the refinement keeps (new points go after)
-  return s.surface.points.empty() ? 0.0 : volumeAbout(s.surface.points[0], s.surface.points, outer);
+  return sixTimes / 6.0;
 }
 
 double outerMinimumAngle(const SubdomainSurface& s)

@@ -66,15 +66,18 @@ Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const V
 // closed surface: about one of its corners (sixTimesVolumeAbout).
 double outerSurfaceVolume(const SurfaceComplex& c)
 {
-  std::vector<Triangle> outer;
+  const Vec3* o = nullptr;
+  double sixTimes = 0;
   for (std::size_t t = 0; t < c.triangles.size(); ++t)
   {
     if (c.trianglePairs[t][1] == -1)
     {
-      outer.push_back(c.triangles[t]);
+      const Triangle& f = c.triangles[t];
+      o = o ? o : &c.points[f[0]];
+      sixTimes += sixTimesVolumeAbout(*o, c.points[f[0]], c.points[f[1]], c.points[f[2]]);
     }
   }
-  return outer.empty() ? 0.0 : volumeAbout(c.points[outer.front()[0]], c.points, outer);
+  return sixTimes / 6.0;
 }
 
 // Largest distance from the vertices and triangle centroids of `from` to

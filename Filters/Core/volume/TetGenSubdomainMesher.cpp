@@ -607,12 +607,14 @@ bool cavityHoles(const TriangleSurface& s, std::vector<Vec3>& holes)
 {
   for (const auto& shell : shells(s))
   {
-    std::vector<Triangle> triangles;
+    const Vec3& o = s.points[s.triangles[shell.front()][0]];
+    double sixTimes = 0;
     for (Index t : shell)
     {
-      triangles.push_back(s.triangles[t]);
+      const Triangle& tri = s.triangles[t];
+      sixTimes += sixTimesVolumeAbout(o, s.points[tri[0]], s.points[tri[1]], s.points[tri[2]]);
     }
-    if (volumeAbout(s.points[triangles.front()[0]], s.points, triangles) < 0)
+    if (sixTimes < 0)
     {
       Vec3 hole;
       if (!holePoint(s, shell, hole))
