@@ -1175,11 +1175,12 @@ bool startComplex(PreparedSurface prepared, DecompositionResult& result, double&
   return true;
 }
 
-// Within 1e-13 of the diagonal: 1000 x the rounding of a computed crossing,
-// 10 x under the 1e-12 that output points may lie off the input.
+// Within 1e-13 of the diagonal: 1000 x the rounding of a computed crossing
+// near the origin, 10 x under the 1e-12 that output points may lie off the
+// input; far from it, 100 roundings of the coordinates (roundOffTolerance).
 double flatTolerance(const SurfaceComplex& c)
 {
-  return 1e-13 * boundingBoxDiagonal(c.points);
+  return roundOffTolerance(c.points, 1e-13);
 }
 
 // The cuts of the decomposition. Parts are numbered as they are made (the

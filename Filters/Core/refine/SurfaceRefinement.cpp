@@ -106,9 +106,10 @@ std::vector<int> facetLabels(
   // The pieces of one input triangle cut by a plane are coplanar but for the
   // round-off of the cut points (about 1e-16 of the coordinates): such a
   // piece still joins, as everything within 1e-13 of the subdomain's
-  // bounding-box diagonal does, far below the 1e-12 a point may lie off the
-  // input surface.
-  const double roundOff = 1e-13 * boundingBoxDiagonal(s.surface.points);
+  // bounding-box diagonal does (or 100 roundings of its coordinates, far
+  // from the origin: roundOffTolerance), far below the 1e-12 a point may
+  // lie off the input surface.
+  const double roundOff = roundOffTolerance(s.surface.points, 1e-13);
   std::vector<int> label(tris.size(), -1);
   int facets = 0;
   std::vector<Index> stack;

@@ -188,7 +188,9 @@ private:
   std::vector<ExactFrame> frames;
   // how far an interface point may lie from its cutting plane and still
   // count as on it: 1e-13 of the bounding-box diagonal, 1000 times the
-  // rounding of a coordinate, and 10 times under the 1e-12 the tests allow
+  // rounding of a coordinate near the origin, and 10 times under the 1e-12
+  // the tests allow; far from the origin 100 roundings of the coordinates
+  // (roundOffTolerance)
   double planeTolerance = 0;
 
   int patchOf(std::size_t t) const { return c.trianglePlanes.empty() ? -1 : c.trianglePlanes[t]; }
@@ -815,7 +817,7 @@ void Relaxer::run(RelaxationResult& result)
   markRegion();
   if (options.mode == RelaxationMode::KeepSurface)
   {
-    planeTolerance = 1e-13 * boundingBoxDiagonal(original);
+    planeTolerance = roundOffTolerance(original, 1e-13);
     classifyExactly();
   }
   else

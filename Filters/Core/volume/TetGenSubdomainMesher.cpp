@@ -1169,7 +1169,8 @@ bool liesOn(const TriangleSurface& s, const Triangle& t, const Vec3& p, double t
 // no neighbour shares, that keeps the mesh conforming and the point on the
 // input surface, so it is accepted where every split triangle is one of
 // `splittable`, every new face lies on a split triangle (its corners within
-// 1e-12 of the surface's bounding-box diagonal of its plane) and the new
+// 1e-12 of the surface's bounding-box diagonal of its plane, or
+// 100 roundings of its coordinates: roundOffTolerance) and the new
 // faces have the split triangles' area; `why` says what failed otherwise.
 // `boundary` and `sortedInput` are the sorted keys of the mesh's boundary
 // faces and of the surface's triangles.
@@ -1196,7 +1197,7 @@ bool acceptSplitFaces(const TriangleSurface& s, const std::vector<char>& splitta
   std::vector<Triangle> added;
   std::copy_if(boundary.begin(), boundary.end(), std::back_inserter(added),
     [&](const Triangle& f) { return !contains(sortedInput, f); });
-  const double tolerance = 1e-12 * boundingBoxDiagonal(s.points);
+  const double tolerance = roundOffTolerance(s.points, 1e-12);
   for (const Triangle& f : outwardFaces(r.mesh, added))
   {
     const Vec3 &a = r.mesh.points[f[0]], &b = r.mesh.points[f[1]], &c = r.mesh.points[f[2]];
