@@ -456,9 +456,10 @@ INSTANTIATE_TEST_SUITE_P(KAndStrategy, KeepSurfaceRelaxation,
 
 // A part far from the coordinate origin relaxes as it does near it. Cut
 // points are rounded to their coordinates' precision; with a tolerance of
-// 1e-13 of the diagonal alone, 10^4 diagonals away no cut point of netgen's part1 (K = 8) counted as
-// on its plane, the relaxer moved none, and the mesh of KiCad's HC49U at
-// K = 8 kept 0.09 degrees instead of 4.41 (session 32).
+// 1e-13 of the diagonal alone, no cut point of netgen's part1 (K = 8) 10^4
+// diagonals away counted as on its plane and the relaxer moved none (285
+// near the origin); KiCad's HC49U at K = 8 then kept 0.09 degrees instead
+// of 4.41 (session 32).
 TEST(SurfaceRelaxationFar, APartFarFromTheOriginRelaxesAsNearIt)
 {
   const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/netgen_part1.off");
