@@ -1484,8 +1484,13 @@ DecompositionResult decomposeVolumeBalanced(const TriangleSurface& input, const 
   return decomposeVolumeBalanced(prepareInputSurface(input, options.inputCheck), options);
 }
 
-DecompositionResult decomposeVolumeBalanced(PreparedSurface prepared, const DecompositionOptions& options)
+namespace
 {
+// One decomposition with `options`; `cutFailed` says whether it failed in
+// the cuts themselves (not on the options or the input).
+DecompositionResult decomposeOnce(PreparedSurface prepared, const DecompositionOptions& options, bool& cutFailed)
+{
+  cutFailed = false;
   DecompositionResult result;
   const int K = options.numberOfSubdomains;
   result.error = optionError(options);
@@ -1513,6 +1518,7 @@ DecompositionResult decomposeVolumeBalanced(PreparedSurface prepared, const Deco
     if (!cutting.parallelPlanes(K))
     {
       result.error = cutting.error;
+      cutFailed = !result.refusedBeforeCutting;
       return result;
     }
   }
@@ -1521,6 +1527,7 @@ DecompositionResult decomposeVolumeBalanced(PreparedSurface prepared, const Deco
     if (!cutting.bisect(0, K))
     {
       result.error = cutting.error;
+      cutFailed = !result.refusedBeforeCutting;
       return result;
     }
   }
@@ -1555,5 +1562,36 @@ DecompositionResult decomposeVolumeBalanced(PreparedSurface prepared, const Deco
   }
   result.ok = true;
   return result;
+}
+} // namespace
+
+DecompositionResult decomposeVolumeBalanced(PreparedSurface prepared, const DecompositionOptions& options)
+{
+  bool cutFailed = false;
+  if (!options.removeFlatCrossings)
+  {
+    return decomposeOnce(std::move(prepared), options, cutFailed);
+  }
+  DecompositionResult first = decomposeOnce(prepared, options, cutFailed);
+  if (first.ok || !cutFailed)
+  {
+    return first;
+  }
+  // Removing flat crossings leaves other contours, and so other parts to
+  // cut: KiCad's SOD-70 by ParallelPlanes at K = 37 found no sound plane for
+  // one part that way ("no balanced cut of a part kept both halves free of
+  // self-intersections", on 1, 2 and 3 ranks), and meshed with the flat
+  // crossings kept, as tetmesh.py's first recut does after a later stage
+  // fails (session 32). Every rank runs the same cuts, so all retry alike.
+  DecompositionOptions keeping = options;
+  keeping.removeFlatCrossings = false;
+  DecompositionResult second = decomposeOnce(std::move(prepared), keeping, cutFailed);
+  if (!second.ok)
+  {
+    return first;
+  }
+  second.warnings.insert(second.warnings.begin(),
+    "the cut removing flat crossings failed (" + first.error + "); cut again keeping them (RemoveFlatCrossings off)");
+  return second;
 }
 } // namespace ptm
