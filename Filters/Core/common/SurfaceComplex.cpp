@@ -179,6 +179,16 @@ std::vector<Index> regionPoints(const InterfaceRegion& region)
   return points;
 }
 
+double largestCoordinateOf(const SurfaceComplex& c, const InterfaceRegion& region)
+{
+  double largest = 0;
+  for (const DirectedEdge& e : region.edges)
+  {
+    largest = std::max(largest, largestCoordinate(c.points[e[0]]));
+  }
+  return largest;
+}
+
 std::vector<Triangle> subdomainTriangles(const SurfaceComplex& c, int s)
 {
   std::vector<Triangle> out;

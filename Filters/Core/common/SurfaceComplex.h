@@ -76,6 +76,10 @@ double labelVolume(const SurfaceComplex& complex, int label);
 // The points of a region's boundary, each once, in increasing index order.
 std::vector<Index> regionPoints(const InterfaceRegion& region);
 
+// The largest |coordinate| of a region's boundary points: a point computed
+// on its plane lies on it up to about eps times this.
+double largestCoordinateOf(const SurfaceComplex& complex, const InterfaceRegion& region);
+
 // Vector area (1/2 sum (p - about) x (q - about)) of a set of directed
 // boundary edges; for closed loops the same about any point, but accurate
 // only about one near them.

@@ -59,6 +59,21 @@ double volumeAbout(const Vec3& o, const std::vector<Vec3>& points, const Triangl
   return sixTimes / 6.0;
 }
 
+// The same for the triangles of `triangles` whose indices are in `which`, in
+// that order (a shell, or the outer part of a subdomain surface).
+template <typename Indices>
+double volumeAbout(
+  const Vec3& o, const std::vector<Vec3>& points, const std::vector<Triangle>& triangles, const Indices& which)
+{
+  double sixTimes = 0;
+  for (Index t : which)
+  {
+    const Triangle& f = triangles[t];
+    sixTimes += sixTimesVolumeAbout(o, points[f[0]], points[f[1]], points[f[2]]);
+  }
+  return sixTimes / 6.0;
+}
+
 // The signed volume a closed surface encloses, about its first corner.
 inline double enclosedVolume(const TriangleSurface& s)
 {

@@ -22,6 +22,8 @@ inline Vec3 cross(const Vec3& a, const Vec3& b)
   return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
 }
 inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+// The largest |coordinate|: one rounding of p is about eps times this.
+inline double largestCoordinate(const Vec3& p) { return std::max({ std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2]) }); }
 inline Vec3 normalized(const Vec3& a)
 {
   const double n = norm(a);
@@ -138,11 +140,7 @@ inline double roundOffTolerance(const std::vector<Vec3>& points, double relative
     return 0;
   }
   const Box box = boxOf(points);
-  double largest = 0;
-  for (int k = 0; k < 3; ++k)
-  {
-    largest = std::max({ largest, std::fabs(box.lo[k]), std::fabs(box.hi[k]) });
-  }
+  const double largest = std::max(largestCoordinate(box.lo), largestCoordinate(box.hi));
   constexpr double kRoundings = 100 * std::numeric_limits<double>::epsilon();
   return std::max(relative * norm(box.hi - box.lo), kRoundings * largest);
 }

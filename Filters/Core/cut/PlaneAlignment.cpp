@@ -34,13 +34,7 @@ NearlyContinuedLine findNearlyContinuedLine(
     const Vec3 along = normalized(proposedLine);
     // points computed on a plane (crossings, chord points) lie on it up to
     // round-off of their coordinates
-    double scale = 0;
-    for (const DirectedEdge& e : region.edges)
-    {
-      const Vec3& p = c.points[e[0]];
-      scale = std::max({ scale, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2]) });
-    }
-    const double onPlane = 1e-12 * std::max(scale, 1e-300);
+    const double onPlane = 1e-12 * std::max(largestCoordinateOf(c, region), 1e-300);
     for (std::size_t q = 0; q < c.planes.size(); ++q)
     {
       const int planeId = static_cast<int>(q);

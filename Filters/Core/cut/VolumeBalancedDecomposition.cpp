@@ -128,7 +128,7 @@ bool volumesAddUp(const SurfaceComplex& c, double parts, double whole)
   double largest = 0;
   for (const Vec3& p : c.points)
   {
-    largest = std::max({ largest, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2]) });
+    largest = std::max(largest, largestCoordinate(p));
   }
   std::size_t terms = c.triangles.size();
   for (const InterfaceRegion& region : c.interfaces)

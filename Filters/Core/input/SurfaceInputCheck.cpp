@@ -157,7 +157,7 @@ void InputPreparation::checkPoints()
         firstNonFinite = static_cast<Index>(i);
       }
     }
-    else if (const double magnitude = std::max({ std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2]) });
+    else if (const double magnitude = largestCoordinate(p);
              magnitude > largest)
     {
       largest = magnitude;

@@ -575,18 +575,16 @@ double outerVolume(const SubdomainSurface& s)
   {
     return 0.0;
   }
-  // about the first point, which the refinement keeps (new points go after)
-  const std::vector<Vec3>& p = s.surface.points;
-  double sixTimes = 0;
+  std::vector<Index> outer;
   for (std::size_t t = 0; t < s.surface.triangles.size(); ++t)
   {
     if (s.otherSide[t] < 0)
     {
-      const Triangle& tri = s.surface.triangles[t];
-      sixTimes += sixTimesVolumeAbout(p[0], p[tri[0]], p[tri[1]], p[tri[2]]);
+      outer.push_back(static_cast<Index>(t));
     }
   }
-  return sixTimes / 6.0;
+  // about the first point, which the refinement keeps (new points go after)
+  return volumeAbout(s.surface.points[0], s.surface.points, s.surface.triangles, outer);
 }
 
 double outerMinimumAngle(const SubdomainSurface& s)

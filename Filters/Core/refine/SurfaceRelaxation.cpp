@@ -66,18 +66,15 @@ Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const V
 // closed surface: about one of its corners (sixTimesVolumeAbout).
 double outerSurfaceVolume(const SurfaceComplex& c)
 {
-  const Vec3* o = nullptr;
-  double sixTimes = 0;
+  std::vector<Index> outer;
   for (std::size_t t = 0; t < c.triangles.size(); ++t)
   {
     if (c.trianglePairs[t][1] == -1)
     {
-      const Triangle& f = c.triangles[t];
-      o = o ? o : &c.points[f[0]];
-      sixTimes += sixTimesVolumeAbout(*o, c.points[f[0]], c.points[f[1]], c.points[f[2]]);
+      outer.push_back(static_cast<Index>(t));
     }
   }
-  return sixTimes / 6.0;
+  return outer.empty() ? 0.0 : volumeAbout(c.points[c.triangles[outer[0]][0]], c.points, c.triangles, outer);
 }
 
 // Largest distance from the vertices and triangle centroids of `from` to

@@ -607,14 +607,7 @@ bool cavityHoles(const TriangleSurface& s, std::vector<Vec3>& holes)
 {
   for (const auto& shell : shells(s))
   {
-    const Vec3& o = s.points[s.triangles[shell.front()][0]];
-    double sixTimes = 0;
-    for (Index t : shell)
-    {
-      const Triangle& tri = s.triangles[t];
-      sixTimes += sixTimesVolumeAbout(o, s.points[tri[0]], s.points[tri[1]], s.points[tri[2]]);
-    }
-    if (sixTimes < 0)
+    if (volumeAbout(s.points[s.triangles[shell.front()][0]], s.points, s.triangles, shell) < 0)
     {
       Vec3 hole;
       if (!holePoint(s, shell, hole))
