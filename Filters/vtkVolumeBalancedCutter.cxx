@@ -439,8 +439,10 @@ int vtkVolumeBalancedCutter::RequestData(
   try
   {
     result = ptm::decomposeVolumeBalanced(std::move(prepared), options);
-    localError = result.ok                 ? ""
+    localError = result.ok          ? ""
       : result.refusedBeforeCutting ? "the cut is refused: " + result.error
+      : result.failedInCuts         ? "the cut failed (the input surface is sound; another K, strategy or "
+                                      "Direction cuts it otherwise): " + result.error
                                     : "the input surface cannot be meshed: " + result.error;
   }
   catch (const std::exception& e)

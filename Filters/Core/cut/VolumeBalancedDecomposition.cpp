@@ -1486,11 +1486,10 @@ DecompositionResult decomposeVolumeBalanced(const TriangleSurface& input, const 
 
 namespace
 {
-// One decomposition with `options`; `cutFailed` says whether it failed in
-// the cuts themselves (not on the options or the input).
-DecompositionResult decomposeOnce(PreparedSurface prepared, const DecompositionOptions& options, bool& cutFailed)
+// One decomposition with `options`; result.failedInCuts says whether it
+// failed in the cuts themselves (not on the options or the input).
+DecompositionResult decomposeOnce(PreparedSurface prepared, const DecompositionOptions& options)
 {
-  cutFailed = false;
   DecompositionResult result;
   const int K = options.numberOfSubdomains;
   result.error = optionError(options);
@@ -1518,7 +1517,7 @@ DecompositionResult decomposeOnce(PreparedSurface prepared, const DecompositionO
     if (!cutting.parallelPlanes(K))
     {
       result.error = cutting.error;
-      cutFailed = !result.refusedBeforeCutting;
+      result.failedInCuts = !result.refusedBeforeCutting;
       return result;
     }
   }
@@ -1527,7 +1526,7 @@ DecompositionResult decomposeOnce(PreparedSurface prepared, const DecompositionO
     if (!cutting.bisect(0, K))
     {
       result.error = cutting.error;
-      cutFailed = !result.refusedBeforeCutting;
+      result.failedInCuts = !result.refusedBeforeCutting;
       return result;
     }
   }
@@ -1567,13 +1566,12 @@ DecompositionResult decomposeOnce(PreparedSurface prepared, const DecompositionO
 
 DecompositionResult decomposeVolumeBalanced(PreparedSurface prepared, const DecompositionOptions& options)
 {
-  bool cutFailed = false;
   if (!options.removeFlatCrossings)
   {
-    return decomposeOnce(std::move(prepared), options, cutFailed);
+    return decomposeOnce(std::move(prepared), options);
   }
-  DecompositionResult first = decomposeOnce(prepared, options, cutFailed);
-  if (first.ok || !cutFailed)
+  DecompositionResult first = decomposeOnce(prepared, options);
+  if (first.ok || !first.failedInCuts)
   {
     return first;
   }
@@ -1585,7 +1583,7 @@ DecompositionResult decomposeVolumeBalanced(PreparedSurface prepared, const Deco
   // fails (session 32). Every rank runs the same cuts, so all retry alike.
   DecompositionOptions keeping = options;
   keeping.removeFlatCrossings = false;
-  DecompositionResult second = decomposeOnce(std::move(prepared), keeping, cutFailed);
+  DecompositionResult second = decomposeOnce(std::move(prepared), keeping);
   if (!second.ok)
   {
     return first;

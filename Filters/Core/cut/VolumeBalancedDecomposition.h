@@ -116,6 +116,9 @@ struct DecompositionResult
   // true when the options were refused before any cut, the surface being
   // fine (slabs under minimumSlabThickness)
   bool refusedBeforeCutting = false;
+  // true when the cuts themselves failed (no sound or balanced plane for a
+  // part), the options and the input surface being fine
+  bool failedInCuts = false;
   std::vector<std::string> warnings;
   SurfaceComplex complex;
   InputCheckCounts inputCheck;
