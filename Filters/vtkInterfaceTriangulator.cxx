@@ -224,9 +224,10 @@ std::set<RegionKey> regionsOfCrossingSubdomains(vtkMultiProcessController* contr
 // crossed a surface triangle under a vertex snapped 0.12 off the plane, and
 // so did the minimal triangulation; the graded one did not. A region still
 // crossing after both is left to the mesher, which names the subdomain.
-// Returns the number of regions triangulated again.
-long long retriangulateCrossingRegions(
-  vtkMultiProcessController* controller, const ptm::ComplexPiece& piece, std::vector<Done>& done)
+// `flagged`: bentRegionsCrossing of `done` as it is. Returns the number of
+// regions triangulated again.
+long long retriangulateCrossingRegions(vtkMultiProcessController* controller, const ptm::ComplexPiece& piece,
+  std::vector<Done>& done, std::set<RegionKey> flagged)
 {
   ptm::InterfaceTriangulationOptions checked; // as the cutter's check (VolumeBalancedDecomposition.cpp: partCrossesItself)
   checked.smooth = false;
@@ -236,7 +237,10 @@ long long retriangulateCrossingRegions(
   long long redone = 0;
   for (const ptm::InterfaceTriangulationOptions* fallBack : { &checked, &cover })
   {
-    const std::set<RegionKey> flagged = bentRegionsCrossing(controller, piece, done);
+    if (fallBack != &checked)
+    {
+      flagged = bentRegionsCrossing(controller, piece, done);
+    }
     if (flagged.empty())
     {
       break;
@@ -352,13 +356,20 @@ struct Triangulated
 
 // Splits the contours (unless `subdivision` is null) and triangulates every
 // region, then checks the subdomain surfaces whole. Contour subdivision
-// changes the regions' triangulations beyond what the cutter checked: where
-// a subdomain then crosses itself, the regions of that subdomain keep their
-// edges whole and everything is done again from the cut complex, and if one
-// still crosses, no edge is split at all. Only subdomains with a split
-// edge are checked; one that crosses itself as the cut left it is named
-// by the mesher. Every rank learns the same regions, so neighbours stay
-// identical.
+// changes the regions' triangulations beyond what the cutter checked:
+//  * a region bent at a snapped vertex whose triangulation crosses the
+//    surface keeps its edges whole, and everything is done again from the
+//    cut complex. Its fall-back triangulations (retriangulateCrossingRegions)
+//    are far coarser: on gmsh's pipe at 16 parallel planes they left two
+//    subdomains with a third of their interface triangles and 6 x the
+//    tetrahedra under 10 degrees, where the region with its contour whole
+//    crosses nothing (session 33);
+//  * where a subdomain then crosses itself, the regions of that subdomain
+//    keep their edges whole and everything is done again, and if one still
+//    crosses, no edge is split at all.
+// Only subdomains with a split edge are checked whole; one that crosses
+// itself as the cut left it is named by the mesher. Every rank learns the
+// same regions, so neighbours stay identical.
 // Returns 0, 1 on a failure (`localError`, agreed) or 2 on an abort.
 int subdivideAndTriangulate(vtkAlgorithm* self, ptm::StageRun& run, vtkMultiProcessController* controller,
   ptm::ComplexPiece& piece, const ptm::ContourSubdivisionOptions* subdivision,
@@ -386,7 +397,13 @@ int subdivideAndTriangulate(vtkAlgorithm* self, ptm::StageRun& run, vtkMultiProc
       return 2;
     }
     run.Step(0.8, "Checking bent interfaces against the surface");
-    t.redone = retriangulateCrossingRegions(controller, piece, t.done);
+    const std::set<RegionKey> bent = bentRegionsCrossing(controller, piece, t.done);
+    if (t.contourPoints > 0 && !std::includes(t.keepWhole.begin(), t.keepWhole.end(), bent.begin(), bent.end()))
+    {
+      t.keepWhole.insert(bent.begin(), bent.end()); // the same set on every rank: all go round again
+      continue;
+    }
+    t.redone = retriangulateCrossingRegions(controller, piece, t.done, bent);
     if (t.contourPoints == 0)
     {
       return 0;

@@ -21,10 +21,12 @@
  * InterfaceTrianglesBelowMinimumAngleAwayFromBoundary (0 expected),
  * EncroachedBoundarySegments, InterfaceMinimumAngle, InterfaceNewPoints and
  * ContourPointsAdded (the points SubdivideContours put on the loops first),
- * ContourSubdivisionRetries and InterfacesKeptWhole (after the splits every
- * subdomain surface is checked whole for self-intersection; the regions of
- * one that crosses itself keep their edges whole and the stage is redone,
- * and after a second crossing no edge is split).
+ * ContourSubdivisionRetries and InterfacesKeptWhole (after the splits a
+ * region bent at a snapped vertex whose triangles cross the surface keeps
+ * its edges whole, and every subdomain surface is checked whole for
+ * self-intersection; the regions of one that crosses itself keep their
+ * edges whole; the stage is redone after either, and after a second
+ * crossing subdomain no edge is split).
  * Collective: every rank must execute it; a failure anywhere fails all.
  */
 #ifndef vtkInterfaceTriangulator_h

@@ -10,6 +10,10 @@
 // the crossings inside planar faces taken out (FlatCrossingRemoval.h) a loop
 // of the box with a cavity at K = 7 kept an edge 218 times its shortest, and
 // one triangle of 17.8 degrees away from the boundary, without it.
+// As in the InterfaceTriangulator, a subdomain that crosses itself once its
+// loops are split keeps the edges of its interfaces whole, and the stage is
+// done again (since session 33 a region bent at a snapped vertex is split
+// too, and the bracket at K = 8 by planes needs this once).
 #include "ContourSubdivision.h"
 #include "SelfIntersectionCheck.h"
 #include "TestSurfaces.h"
@@ -19,11 +23,64 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <map>
+#include <set>
 #include <sstream>
 
 using namespace ptm;
 using namespace ptm::test;
+
+namespace
+{
+// The subdomains of the complex whose surface crosses itself (exact predicates).
+std::set<int> crossingSubdomains(const SurfaceComplex& c)
+{
+  std::set<int> crossing;
+  for (int s = 0; s < c.subdomainCount; ++s)
+  {
+    if (checkSelfIntersection(TriangleSurface{ c.points, subdomainTriangles(c, s) }).intersects)
+    {
+      crossing.insert(s);
+    }
+  }
+  return crossing;
+}
+
+// The cut complex with its loops split (but the edges of every region next
+// to a subdomain in `keepWhole`) and its interfaces triangulated.
+SurfaceComplex splitAndTriangulate(const DecompositionResult& d, const std::set<int>& keepWhole, InterfaceFigures& figures)
+{
+  SurfaceComplex c = d.complex;
+  ContourSubdivisionOptions subdivision;
+  subdivision.size = d.inputMeanEdgeLength;
+  subdivision.minimumAngleDegrees = 20.7;
+  std::vector<Index> ids(c.points.size());
+  for (std::size_t v = 0; v < ids.size(); ++v)
+  {
+    ids[v] = static_cast<Index>(v);
+  }
+  std::vector<EdgeSplit> splits = interfaceEdgeSplits(c, ids, subdivision);
+  std::set<std::array<Index, 2>> whole;
+  for (const InterfaceRegion& r : c.interfaces)
+  {
+    if (keepWhole.count(r.pair[0]) || keepWhole.count(r.pair[1]))
+    {
+      for (const DirectedEdge& e : r.edges)
+      {
+        whole.insert({ std::min(e[0], e[1]), std::max(e[0], e[1]) });
+      }
+    }
+  }
+  for (EdgeSplit& split : splits)
+  {
+    split.risky = split.risky || whole.count({ std::min(split.ends[0], split.ends[1]), std::max(split.ends[0], split.ends[1]) });
+  }
+  applyEdgeSplits(c, splits);
+  figures = triangulateAllInterfaces(c);
+  return c;
+}
+} // namespace
 
 
 class CompatibleSubdomainSurfaces : public ::testing::TestWithParam<std::tuple<int, CutStrategy>>
@@ -39,18 +96,17 @@ TEST_P(CompatibleSubdomainSurfaces, ClosedManifoldOutwardAndVolumesAddUp)
     label << k.name << " K=" << K << " " << toString(strategy);
     DecompositionResult d = decomposeVolumeBalanced(k.surface, stageCaseOptions(K, strategy));
     ASSERT_TRUE(d.ok) << label.str() << ": " << d.error;
-    SurfaceComplex c = d.complex;
-    ContourSubdivisionOptions subdivision;
-    subdivision.size = d.inputMeanEdgeLength;
-    subdivision.minimumAngleDegrees = 20.7;
-    std::vector<Index> ids(c.points.size());
-    for (std::size_t v = 0; v < ids.size(); ++v)
-    {
-      ids[v] = static_cast<Index>(v);
-    }
-    applyEdgeSplits(c, interfaceEdgeSplits(c, ids, subdivision));
-    const InterfaceFigures figures = triangulateAllInterfaces(c);
+    InterfaceFigures figures;
+    std::set<int> keepWhole;
+    SurfaceComplex c = splitAndTriangulate(d, keepWhole, figures);
     ASSERT_TRUE(figures.ok) << label.str() << ": " << figures.error;
+    if (const std::set<int> crossing = crossingSubdomains(c); !crossing.empty())
+    {
+      std::cout << "[ figure ] " << label.str() << ": " << crossing.size()
+                << " subdomains crossed themselves with their loops split, done again with them whole\n";
+      c = splitAndTriangulate(d, crossing, figures);
+      ASSERT_TRUE(figures.ok) << label.str() << ": " << figures.error;
+    }
     const std::size_t exceptions = figures.exceptions;
     // triangles under the bound only next to the boundary (which is never split)
     EXPECT_EQ(figures.awayFromBoundary, 0u) << label.str();

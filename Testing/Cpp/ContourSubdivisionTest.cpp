@@ -7,6 +7,7 @@
 // and does not cross itself; and a rank that holds only one subdomain's faces
 // computes bit-identical points for the edges it shares.
 #include "ContourSubdivision.h"
+#include "OffFormat.h"
 #include "SelfIntersectionCheck.h"
 #include "TestSurfaces.h"
 
@@ -14,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -205,6 +207,56 @@ TEST(ContourSubdivisionRule, ThinPieceOnAnEdgeSplitsItAtItsWidth)
   options.minimumAngleDegrees = 20.7;
   c.triangles = { { 1, 0, 2 } }; // a good triangle
   EXPECT_EQ(partsOfBase(), 2);
+}
+
+// KiCad's DPDT switch (Data/regression/kicad_switch_dpdt.off, a STEP model
+// read by the CAD reader) cut by 2 parallel planes at the sweep's size: the
+// plane crosses thin pins, and each region also has vertices the cut
+// snapped onto it next to shallow faces elsewhere. Such a vertex used to
+// keep every edge of its region whole, so contour edges up to 10 sizes long
+// stayed on the pins' faces (fans of needle triangles, tetrahedra of 0.07
+// degrees). Now only an edge where a face on it nearly continues the plane
+// stays whole. Triangulated by this file's helper (other options than the
+// pipeline's) a split region here crosses a shallow face at a snapped
+// vertex, so whether it crosses depends on the triangulation: the interface
+// stage checks its own (bent regions crossing the surface are triangulated
+// again, split subdomains are checked whole), and the end-to-end test
+// bent_region_meshes runs the part through it.
+TEST(ContourSubdivisionRule, ARegionBentAtASnappedVertexSplitsItsLongEdges)
+{
+  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/kicad_switch_dpdt.off");
+  ASSERT_TRUE(file.ok) << file.error;
+  DecompositionOptions cut;
+  cut.numberOfSubdomains = 2;
+  cut.strategy = CutStrategy::ParallelPlanes;
+  cut.direction = CutDirection::Inertia;
+  cut.criterion = BalanceCriterion::PredictedCost;
+  cut.costMaximumSize = 0.3471;
+  const DecompositionResult d = decomposeVolumeBalanced(file.data.surface, cut);
+  ASSERT_TRUE(d.ok) << d.error;
+  SurfaceComplex c = d.complex;
+  std::vector<Index> ids(c.points.size());
+  for (std::size_t i = 0; i < ids.size(); ++i)
+  {
+    ids[i] = static_cast<Index>(i);
+  }
+  ContourSubdivisionOptions options;
+  options.size = 0.3471;
+  options.minimumAngleDegrees = 20.7;
+  const std::vector<EdgeSplit> splits = interfaceEdgeSplits(c, ids, options);
+  std::size_t longEdges = 0, longKept = 0;
+  for (const EdgeSplit& e : splits)
+  {
+    if (norm(c.points[e.ends[1]] - c.points[e.ends[0]]) > 3 * options.size)
+    {
+      ++longEdges;
+      longKept += e.risky ? 1 : 0;
+    }
+  }
+  std::cout << "[ figure ] DPDT switch K=2 planes: " << longKept << " of " << longEdges
+            << " contour edges over 3 sizes kept whole\n";
+  EXPECT_GE(longEdges, 5u);
+  EXPECT_EQ(longKept, 0u);
 }
 
 INSTANTIATE_TEST_SUITE_P(KAndStrategy, ContourSubdivision,

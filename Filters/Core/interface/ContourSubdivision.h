@@ -37,8 +37,7 @@
 //  contours the cut made risky to split). A rank sees only the triangles
 //  of its own subdomains, one side of the edge, so the caller agrees on the
 //  largest n any rank wants (splitIntoParts).
-//  Not split: an edge of a region bent at a snapped vertex next to a shallow
-//  surface triangle, or where a face on it nearly continues the plane
+//  Not split: an edge where a face on it nearly continues the plane
 //  (EdgeSplit::risky). Applied: the points are appended in the order of the
 //  splits; every region
 //  edge becomes its chain; every triangle with a split edge becomes a fan
@@ -68,16 +67,12 @@ struct EdgeSplit
   int parts = 1;             // the edge in this many equal parts
   std::vector<Vec3> points;  // the parts - 1 points from ends[0] to ends[1], strictly between them
   // Splitting it could make a subdomain surface cross itself, which the
-  // cutter checked for with the loops as they were:
-  //  * a region on the edge has a vertex that the cut snapped onto its plane
-  //    without moving it, so the interface is bent there, and a surface
-  //    triangle within 30 degrees of the plane at that vertex: a new
-  //    triangulation of the region may cross it (CGAL's rotor from the
-  //    corpus, 16 parallel planes);
-  //  * a surface triangle on the edge, or a second plane through it, lies
-  //    within about 1e-6 radians of the edge's plane: the new points lie on
-  //    the edge only up to one rounding, enough for a face to overlap one that
-  //    nearly continues it.
+  // cutter checked for with the loops as they were: a surface triangle on
+  // the edge, or a second plane through it, lies within about 1e-6 radians
+  // of the edge's plane, and the new points lie on the edge only up to one
+  // rounding, enough for a face to overlap one that nearly continues it.
+  // (Regions bent at a snapped vertex are split; the interface stage checks
+  // them after triangulating, see markRisky in ContourSubdivision.cpp.)
   // Each rank judges only the faces it holds, so a caller with several ranks
   // splits an edge only if no rank finds it risky.
   bool risky = false;
