@@ -361,7 +361,7 @@ struct Triangulated
 //    surface keeps its edges whole, and everything is done again from the
 //    cut complex. Its fall-back triangulations (retriangulateCrossingRegions)
 //    are far coarser: on gmsh's pipe at 16 parallel planes they left two
-//    subdomains with a third of their interface triangles and 6 x the
+//    subdomains with a third of their interface triangles and 6-8 x the
 //    tetrahedra under 10 degrees, where the region with its contour whole
 //    crosses nothing (session 33);
 //  * where a subdomain then crosses itself, the regions of that subdomain

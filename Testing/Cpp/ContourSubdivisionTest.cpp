@@ -219,9 +219,9 @@ TEST(ContourSubdivisionRule, ThinPieceOnAnEdgeSplitsItAtItsWidth)
 // stays whole. Triangulated by this file's helper (other options than the
 // pipeline's) a split region here crosses a shallow face at a snapped
 // vertex, so whether it crosses depends on the triangulation: the interface
-// stage checks its own (bent regions crossing the surface are triangulated
-// again, split subdomains are checked whole), and the end-to-end test
-// bent_region_meshes runs the part through it.
+// stage checks its own (a bent region crossing the surface keeps its edges
+// whole and the stage is redone, split subdomains are checked whole), and
+// the end-to-end test bent_region_meshes runs the part through it.
 TEST(ContourSubdivisionRule, ARegionBentAtASnappedVertexSplitsItsLongEdges)
 {
   const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/kicad_switch_dpdt.off");
