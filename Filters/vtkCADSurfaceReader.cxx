@@ -16,8 +16,53 @@
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
-#include <exception>
+#include <dlfcn.h>
+
 #include <fstream>
+#include <string>
+
+namespace
+{
+// The folder of the library this code is in (the plugin), with a slash.
+std::string folderOfThisLibrary()
+{
+  Dl_info info{};
+  if (::dladdr(reinterpret_cast<void*>(&folderOfThisLibrary), &info) == 0 || !info.dli_fname)
+  {
+    return "";
+  }
+  const std::string path = info.dli_fname;
+  const std::size_t slash = path.rfind('/');
+  return slash == std::string::npos ? "" : path.substr(0, slash + 1);
+}
+
+// ptmReadCADSurface from libptmcad.so (CADTessellation.h: why it is not
+// linked), opened once per process: beside the plugin, else where the build
+// made it. Null, with `error` naming both places, if neither opens.
+ptm::ReadCADSurfaceFunction cadLibraryReader(std::string& error)
+{
+  static std::string failure;
+  static const ptm::ReadCADSurfaceFunction read = [] {
+    std::string tried;
+    for (const std::string& path : { folderOfThisLibrary() + "libptmcad.so", std::string(PTM_CAD_LIBRARY) })
+    {
+      if (void* library = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL))
+      {
+        if (void* f = ::dlsym(library, ptm::kReadCADSurfaceSymbol))
+        {
+          return reinterpret_cast<ptm::ReadCADSurfaceFunction>(f);
+        }
+      }
+      const char* why = ::dlerror(); // names the file
+      tried += (tried.empty() ? "" : "; ") + (why ? std::string(why) : path + " has no " + ptm::kReadCADSurfaceSymbol);
+    }
+    failure = "the CAD reader's library (libptmcad.so, built beside the plugin) could not be opened: " + tried;
+    return ptm::ReadCADSurfaceFunction(nullptr);
+  }();
+  error = failure;
+  return read;
+}
+} // namespace
 
 vtkStandardNewMacro(vtkCADSurfaceReader);
 
@@ -62,14 +107,9 @@ int vtkCADSurfaceReader::RequestData(
   options.angularDeflection = this->AngularDeflection;
   options.solid = this->SolidIndex;
   ptm::CADSurface r;
-  try
+  if (const ptm::ReadCADSurfaceFunction read = cadLibraryReader(r.error))
   {
-    r = ptm::readCADSurface(this->FileName, options);
-  }
-  catch (const std::exception& e) // std::bad_alloc; OCCT's own failures are caught inside
-  {
-    r = ptm::CADSurface();
-    r.error = this->FileName + ": " + e.what();
+    read(this->FileName.c_str(), &options, &r);
   }
   if (!r.ok)
   {

@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <exception>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -365,3 +366,17 @@ CADSurface readCADSurface(const std::string& fileName, const CADReadOptions& opt
   return out;
 }
 } // namespace ptm
+
+extern "C" void ptmReadCADSurface(
+  const char* fileName, const ptm::CADReadOptions* options, ptm::CADSurface* result)
+{
+  try
+  {
+    *result = ptm::readCADSurface(fileName, *options);
+  }
+  catch (const std::exception& e) // std::bad_alloc; OCCT's own failures are caught inside
+  {
+    *result = ptm::CADSurface();
+    result->error = std::string(fileName) + ": " + e.what();
+  }
+}

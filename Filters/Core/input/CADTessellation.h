@@ -54,5 +54,17 @@ struct CADSurface
 };
 
 CADSurface readCADSurface(const std::string& fileName, const CADReadOptions& options);
+
+// The same call under a C name, for the plugin to find with dlsym: the
+// plugin does not link this library (libptmcad.so, built next to it) but
+// opens it on the first CAD file. OpenCASCADE's 19 libraries are bound at
+// load (BIND_NOW); linked into the plugin they cost every rank of every run
+// 0.35-0.52 s and 18 MB before anything was read, CAD input or not.
+// Exceptions do not cross it: `result` carries the error.
+constexpr const char* kReadCADSurfaceSymbol = "ptmReadCADSurface";
+using ReadCADSurfaceFunction = void (*)(const char* fileName, const CADReadOptions* options, CADSurface* result);
 } // namespace ptm
+
+extern "C" void ptmReadCADSurface(
+  const char* fileName, const ptm::CADReadOptions* options, ptm::CADSurface* result);
 #endif
