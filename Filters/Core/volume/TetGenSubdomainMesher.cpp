@@ -3,6 +3,7 @@
 #include "BoundarySliverRepair.h"
 #include "Fnv1a.h"
 #include "SelfIntersectionCheck.h"
+#include "TetGenStream.h"
 #include "TetrahedronQuality.h"
 
 #include <tetgen.h>
@@ -214,13 +215,7 @@ struct TimeLimits
   }
 };
 
-struct ChildHeader
-{
-  int status = 0; // 0 meshed, 1 TetGen error code, 2 out of memory, 3 bad switches
-  int code = 0;
-  long long points = 0;
-  long long tets = 0;
-};
+using ChildHeader = TetGenChildHeader;
 
 // Waits until fd has data to read or the time limit has passed; false on
 // timeout.
@@ -292,7 +287,6 @@ double reapChild(pid_t pid, int& waitStatus)
   const rlimit limit{ cpu, cpu + 1 };
   ::setrlimit(RLIMIT_CPU, &limit);
   ChildHeader h;
-  tetgenio out;
   try
   {
     tetgenbehavior behaviour;
@@ -309,7 +303,10 @@ double reapChild(pid_t pid, int& waitStatus)
         std::setvbuf(stdout, nullptr, _IONBF, 0);
         behaviour.quiet = 0; // its phase lines only: nothing else changes
       }
-      tetrahedralize(&behaviour, &in, &out, addin);
+      // the mesh goes to the parent from TetGen's pools (TetGenStream.h)
+      const bool sent = tetrahedralizeToPipe(behaviour, in, addin, fd);
+      ::close(fd);
+      ::_exit(sent ? 0 : 1);
     }
   }
   catch (int c)
@@ -326,17 +323,8 @@ double reapChild(pid_t pid, int& waitStatus)
     h.status = 1;
     h.code = 2;
   }
-  if (h.status == 0)
-  {
-    h.points = out.numberofpoints;
-    h.tets = out.numberoftetrahedra;
-  }
-  bool ok = writeAll(fd, &h, sizeof(h));
-  if (ok && h.status == 0)
-  {
-    ok = writeAll(fd, out.pointlist, sizeof(REAL) * 3 * static_cast<std::size_t>(h.points)) &&
-      writeAll(fd, out.tetrahedronlist, sizeof(int) * 4 * static_cast<std::size_t>(h.tets));
-  }
+  // a failure: the header alone
+  const bool ok = writeAll(fd, &h, sizeof(h));
   ::close(fd);
   ::_exit(ok ? 0 : 1);
 }

@@ -1,0 +1,185 @@
+#include "TetGenStream.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <ctime>
+#include <memory>
+#include <vector>
+
+namespace ptm
+{
+namespace
+{
+// Writes `bytes` of `data` to fd, through interrupted and partial writes.
+bool writeBytes(int fd, const void* data, std::size_t bytes)
+{
+  const char* p = static_cast<const char*>(data);
+  while (bytes > 0)
+  {
+    const ssize_t w = ::write(fd, p, bytes);
+    if (w < 0 && errno == EINTR)
+    {
+      continue;
+    }
+    if (w <= 0)
+    {
+      return false;
+    }
+    p += w;
+    bytes -= static_cast<std::size_t>(w);
+  }
+  return true;
+}
+
+// Values gathered in blocks of 1 MB and written a block at a time.
+template <typename T>
+class BlockWriter
+{
+public:
+  explicit BlockWriter(int fd)
+    : Fd(fd)
+  {
+    this->Block.reserve(kValues);
+  }
+  bool Add(T value)
+  {
+    this->Block.push_back(value);
+    return this->Block.size() < kValues || this->Flush();
+  }
+  bool Flush()
+  {
+    const bool ok = writeBytes(this->Fd, this->Block.data(), sizeof(T) * this->Block.size());
+    this->Block.clear();
+    return ok;
+  }
+
+private:
+  static constexpr std::size_t kValues = (1u << 20) / sizeof(T);
+  int Fd;
+  std::vector<T> Block;
+};
+
+// TetGen 1.5.0's stages between reading the input and writing the output,
+// as its tetrahedralize() runs them for the switches this project uses.
+void runStages(tetgenmesh& m, tetgenbehavior& b, tetgenio& in, tetgenio* addin)
+{
+  m.b = &b;
+  m.in = &in;
+  m.addin = addin;
+  m.initializepools();
+  m.transfernodes();
+  exactinit(b.verbose, b.noexact, b.nostaticfilter, m.xmax - m.xmin, m.ymax - m.ymin, m.zmax - m.zmin);
+  std::clock_t phase = 0; // TetGen's timing out-parameter, unused here
+  if (b.refine)
+  {
+    m.reconstructmesh();
+  }
+  else
+  {
+    m.incrementaldelaunay(phase);
+  }
+  const bool surface = b.plc && !b.refine;
+  if (surface)
+  {
+    m.meshsurface();
+    if (b.nobisect)
+    {
+      m.recoverboundary(phase);
+    }
+    else
+    {
+      m.constraineddelaunay(phase);
+    }
+    m.carveholes(); // prints "Removing exterior tetrahedra" (pastBoundaryRecovery)
+    if (b.nobisect && m.subvertstack->objects > 0)
+    {
+      m.suppresssteinerpoints();
+    }
+  }
+  if (b.coarsen)
+  {
+    m.meshcoarsening();
+  }
+  if ((b.plc && b.nobisect) || b.coarsen)
+  {
+    m.recoverdelaunay();
+  }
+  if ((b.plc || b.refine) && b.insertaddpoints && addin && addin->numberofpoints > 0)
+  {
+    m.insertconstrainedpoints(addin);
+  }
+  if (b.quality)
+  {
+    m.delaunayrefinement();
+  }
+  if ((b.plc || b.refine) && b.optlevel > 0)
+  {
+    m.optimizemesh();
+  }
+  if (!b.nojettison && (m.dupverts > 0 || m.unuverts > 0 || (b.refine && in.numberofcorners == 10)))
+  {
+    m.jettisonnodes();
+  }
+}
+
+// The points in pool order, then the tetrahedra (hull ones left out) as
+// point indices, numbered as TetGen's outnodes and outelements number them.
+bool sendMesh(tetgenmesh& m, const tetgenbehavior& b, const tetgenio& in, int fd)
+{
+  // both blocks first: nothing after the header may throw
+  BlockWriter<double> coordinates(fd);
+  BlockWriter<int> corners(fd);
+  TetGenChildHeader h;
+  h.points = m.points->items;
+  h.tets = m.tetrahedrons->items > 0 ? m.tetrahedrons->items - m.hullsize : 0;
+  if (!writeBytes(fd, &h, sizeof(h)))
+  {
+    return false;
+  }
+  m.points->traversalinit();
+  for (tetgenmesh::point p = m.pointtraverse(); p; p = m.pointtraverse())
+  {
+    if (!coordinates.Add(p[0]) || !coordinates.Add(p[1]) || !coordinates.Add(p[2]))
+    {
+      return false;
+    }
+  }
+  if (!coordinates.Flush())
+  {
+    return false;
+  }
+  if (h.tets == 0)
+  {
+    return true;
+  }
+  const int shift = in.firstnumber == 1 && b.zeroindex ? 1 : 0;
+  m.tetrahedrons->traversalinit();
+  for (tetgenmesh::tetrahedron* t = m.tetrahedrontraverse(); t; t = m.tetrahedrontraverse())
+  {
+    const int first = b.reversetetori ? 5 : 4, second = b.reversetetori ? 4 : 5;
+    for (int k : { first, second, 6, 7 })
+    {
+      if (!corners.Add(m.pointmark(reinterpret_cast<tetgenmesh::point>(t[k])) - shift))
+      {
+        return false;
+      }
+    }
+  }
+  return corners.Flush();
+}
+} // namespace
+
+bool tetrahedralizeToPipe(tetgenbehavior& b, tetgenio& in, tetgenio* addin, int fd)
+{
+  // On a TetGen failure the mesh is freed as the int it throws unwinds, as
+  // inside tetrahedralize() (libtet 1.5 often crashes there; the parent
+  // counts such a crash as a failed run). After success it is left to the
+  // child's exit: freeing the pools of a large mesh takes a while.
+  auto m = std::make_unique<tetgenmesh>();
+  runStages(*m, b, in, addin);
+  const bool sent = sendMesh(*m, b, in, fd);
+  m.release(); // NOLINT: the child process ends next
+  return sent;
+}
+} // namespace ptm

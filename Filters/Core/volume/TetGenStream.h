@@ -1,0 +1,40 @@
+#ifndef PTM_TETGEN_STREAM_H
+#define PTM_TETGEN_STREAM_H
+// TetGen's meshing run inside the child process (TetGenSubdomainMesher.cpp
+// forks one per run), with the mesh sent to the parent straight from
+// TetGen's own pools.
+//
+// Why: tetrahedralize() copies the finished mesh into its output tetgenio
+// (points 24 bytes, tetrahedra 16 bytes each) while its pools still hold it,
+// and that moment is the child's peak: on the 10 M-tetrahedron ball, 2
+// ranks, each rank's TetGen child peaked at 1065 MB against serial TetGen's
+// 1644 MB for the whole mesh, about 100 MB of it those copies.
+//
+// Contract of tetrahedralizeToPipe: the same stages, in the same order and
+// under the same switches, as libtet 1.5.0's tetrahedralize(b, in, out,
+// addin) for what this project asks of it (p or r, Y, q, a, m with sizes at
+// the points and no background mesh, i, O, z, no -d, -R or -o2), then
+//  * a TetGenChildHeader (status 0, the point and tetrahedron counts),
+//  * every point's x, y, z (double) in the order of TetGen's point pool,
+//  * every tetrahedron's four point indices (int) in the order of its pool,
+//    hull tetrahedra left out,
+// written to `fd`: byte for byte what writing out.pointlist and
+// out.tetrahedronlist after tetrahedralize() wrote (TetMeshingTest compares
+// the two). TetGen's failures propagate (it throws an int) before anything
+// is written; false if the pipe broke. The mesh is never freed: the child
+// ends right after.
+#include <tetgen.h>
+
+namespace ptm
+{
+struct TetGenChildHeader
+{
+  int status = 0; // 0 meshed, 1 TetGen error code, 2 out of memory, 3 bad switches
+  int code = 0;
+  long long points = 0;
+  long long tets = 0;
+};
+
+bool tetrahedralizeToPipe(tetgenbehavior& b, tetgenio& in, tetgenio* addin, int fd);
+} // namespace ptm
+#endif
