@@ -11,27 +11,6 @@ namespace ptm
 {
 namespace
 {
-// Writes `bytes` of `data` to fd, through interrupted and partial writes.
-bool writeBytes(int fd, const void* data, std::size_t bytes)
-{
-  const char* p = static_cast<const char*>(data);
-  while (bytes > 0)
-  {
-    const ssize_t w = ::write(fd, p, bytes);
-    if (w < 0 && errno == EINTR)
-    {
-      continue;
-    }
-    if (w <= 0)
-    {
-      return false;
-    }
-    p += w;
-    bytes -= static_cast<std::size_t>(w);
-  }
-  return true;
-}
-
 // Values gathered in blocks of 1 MB and written a block at a time.
 template <typename T>
 class BlockWriter
@@ -49,7 +28,7 @@ public:
   }
   bool Flush()
   {
-    const bool ok = writeBytes(this->Fd, this->Block.data(), sizeof(T) * this->Block.size());
+    const bool ok = writeAllBytes(this->Fd, this->Block.data(), sizeof(T) * this->Block.size());
     this->Block.clear();
     return ok;
   }
@@ -133,7 +112,7 @@ bool sendMesh(tetgenmesh& m, const tetgenbehavior& b, const tetgenio& in, int fd
   TetGenChildHeader h;
   h.points = m.points->items;
   h.tets = m.tetrahedrons->items > 0 ? m.tetrahedrons->items - m.hullsize : 0;
-  if (!writeBytes(fd, &h, sizeof(h)))
+  if (!writeAllBytes(fd, &h, sizeof(h)))
   {
     return false;
   }
@@ -169,6 +148,26 @@ bool sendMesh(tetgenmesh& m, const tetgenbehavior& b, const tetgenio& in, int fd
   return corners.Flush();
 }
 } // namespace
+
+bool writeAllBytes(int fd, const void* data, std::size_t bytes)
+{
+  const char* p = static_cast<const char*>(data);
+  while (bytes > 0)
+  {
+    const ssize_t w = ::write(fd, p, bytes);
+    if (w < 0 && errno == EINTR)
+    {
+      continue;
+    }
+    if (w <= 0)
+    {
+      return false;
+    }
+    p += w;
+    bytes -= static_cast<std::size_t>(w);
+  }
+  return true;
+}
 
 bool tetrahedralizeToPipe(tetgenbehavior& b, tetgenio& in, tetgenio* addin, int fd)
 {

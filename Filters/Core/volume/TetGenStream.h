@@ -25,6 +25,8 @@
 // ends right after.
 #include <tetgen.h>
 
+#include <cstddef>
+
 namespace ptm
 {
 struct TetGenChildHeader
@@ -36,5 +38,9 @@ struct TetGenChildHeader
 };
 
 bool tetrahedralizeToPipe(tetgenbehavior& b, tetgenio& in, tetgenio* addin, int fd);
+
+// Writes `bytes` of `data` to fd, through interrupted and partial writes;
+// false if the pipe broke.
+bool writeAllBytes(int fd, const void* data, std::size_t bytes);
 } // namespace ptm
 #endif

@@ -152,26 +152,6 @@ bool validExtraSwitches(const std::string& s)
   }
   return true;
 }
-bool writeAll(int fd, const void* data, std::size_t bytes)
-{
-  const char* p = static_cast<const char*>(data);
-  while (bytes > 0)
-  {
-    const ssize_t w = ::write(fd, p, bytes);
-    if (w < 0 && errno == EINTR)
-    {
-      continue;
-    }
-    if (w <= 0)
-    {
-      return false;
-    }
-    p += w;
-    bytes -= static_cast<std::size_t>(w);
-  }
-  return true;
-}
-
 bool readAll(int fd, void* data, std::size_t bytes)
 {
   char* p = static_cast<char*>(data);
@@ -324,7 +304,7 @@ double reapChild(pid_t pid, int& waitStatus)
     h.code = 2;
   }
   // a failure: the header alone
-  const bool ok = writeAll(fd, &h, sizeof(h));
+  const bool ok = writeAllBytes(fd, &h, sizeof(h));
   ::close(fd);
   ::_exit(ok ? 0 : 1);
 }
