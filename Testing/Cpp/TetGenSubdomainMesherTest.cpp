@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <numeric>
 #include <set>
 #include <string>
 #include <utility>
@@ -623,32 +624,15 @@ TEST(TetGenSubdomainMesher, ThroughputFigure)
 
 namespace
 {
-// TetGen's input for `s`: its points, one facet per triangle (zero-based).
+// TetGen's input for `s` as the mesher fills it, in the canonical order.
 void fillPlc(const TriangleSurface& s, tetgenio& in)
 {
-  in.firstnumber = 0;
-  in.numberofpoints = static_cast<int>(s.points.size());
-  in.pointlist = new REAL[3 * s.points.size()];
-  for (std::size_t i = 0; i < s.points.size(); ++i)
-  {
-    std::copy(s.points[i].begin(), s.points[i].end(), in.pointlist + 3 * i);
-  }
-  in.numberoffacets = static_cast<int>(s.triangles.size());
-  in.facetlist = new tetgenio::facet[s.triangles.size()];
-  for (std::size_t t = 0; t < s.triangles.size(); ++t)
-  {
-    tetgenio::facet& f = in.facetlist[t];
-    tetgenio::init(&f);
-    f.numberofpolygons = 1;
-    f.polygonlist = new tetgenio::polygon[1];
-    tetgenio::init(&f.polygonlist[0]);
-    f.polygonlist[0].numberofvertices = 3;
-    f.polygonlist[0].vertexlist = new int[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      f.polygonlist[0].vertexlist[k] = static_cast<int>(s.triangles[t][k]);
-    }
-  }
+  std::vector<Index> order(s.points.size()), facets(s.triangles.size());
+  std::iota(order.begin(), order.end(), Index{ 0 });
+  std::iota(facets.begin(), facets.end(), Index{ 0 });
+  std::vector<int> position(s.points.size());
+  std::iota(position.begin(), position.end(), 0);
+  fillTetGenInput(s, order, position, facets, {}, {}, in);
 }
 
 // What tetrahedralizeToPipe sends, from a child process as the mesher runs it.

@@ -149,6 +149,60 @@ bool sendMesh(tetgenmesh& m, const tetgenbehavior& b, const tetgenio& in, int fd
 }
 } // namespace
 
+void fillTetGenInput(const TriangleSurface& s, const std::vector<Index>& order,
+  const std::vector<int>& position, const std::vector<Index>& facets, const std::vector<Vec3>& holes,
+  const std::vector<double>& sizes, tetgenio& in)
+{
+  const std::size_t n = s.points.size();
+  in.firstnumber = 0;
+  in.numberofpoints = static_cast<int>(n);
+  in.pointlist = new REAL[3 * n];
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      in.pointlist[3 * i + k] = s.points[order[i]][k];
+    }
+  }
+  if (!sizes.empty())
+  {
+    in.numberofpointmtrs = 1;
+    in.pointmtrlist = new REAL[n];
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      in.pointmtrlist[i] = sizes[order[i]];
+    }
+  }
+  in.numberoffacets = static_cast<int>(s.triangles.size());
+  in.facetlist = new tetgenio::facet[s.triangles.size()];
+  for (std::size_t t = 0; t < s.triangles.size(); ++t)
+  {
+    tetgenio::facet& f = in.facetlist[t];
+    tetgenio::init(&f);
+    f.numberofpolygons = 1;
+    f.polygonlist = new tetgenio::polygon[1];
+    tetgenio::init(&f.polygonlist[0]);
+    f.polygonlist[0].numberofvertices = 3;
+    f.polygonlist[0].vertexlist = new int[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      f.polygonlist[0].vertexlist[k] = position[s.triangles[facets[t]][k]];
+    }
+  }
+  if (!holes.empty())
+  {
+    in.numberofholes = static_cast<int>(holes.size());
+    in.holelist = new REAL[3 * holes.size()];
+    for (std::size_t h = 0; h < holes.size(); ++h)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        in.holelist[3 * h + k] = holes[h][k];
+      }
+    }
+  }
+}
+
 bool writeAllBytes(int fd, const void* data, std::size_t bytes)
 {
   const char* p = static_cast<const char*>(data);

@@ -10,6 +10,11 @@
 // ranks, each rank's TetGen child peaked at 1065 MB against serial TetGen's
 // 1644 MB for the whole mesh, about 100 MB of it those copies.
 //
+// fillTetGenInput: TetGen's input for a surface, the surface points in the
+// given order (position[i] is where surface point i goes), one facet per
+// triangle in the order `facets` (the surface triangle of each facet), the
+// hole points, and the sizes at the points (-m; none if empty).
+//
 // Contract of tetrahedralizeToPipe: the same stages, in the same order and
 // under the same switches, as libtet 1.5.0's tetrahedralize(b, in, out,
 // addin) for what this project asks of it (p or r, Y, q, a, m with sizes at
@@ -23,9 +28,12 @@
 // the two). TetGen's failures propagate (it throws an int) before anything
 // is written; false if the pipe broke. The mesh is never freed: the child
 // ends right after.
+#include "TriangleSurface.h"
+
 #include <tetgen.h>
 
 #include <cstddef>
+#include <vector>
 
 namespace ptm
 {
@@ -36,6 +44,10 @@ struct TetGenChildHeader
   long long points = 0;
   long long tets = 0;
 };
+
+void fillTetGenInput(const TriangleSurface& s, const std::vector<Index>& order,
+  const std::vector<int>& position, const std::vector<Index>& facets, const std::vector<Vec3>& holes,
+  const std::vector<double>& sizes, tetgenio& in);
 
 bool tetrahedralizeToPipe(tetgenbehavior& b, tetgenio& in, tetgenio* addin, int fd);
 
