@@ -195,8 +195,6 @@ struct TimeLimits
   }
 };
 
-using ChildHeader = TetGenChildHeader;
-
 // Waits until fd has data to read or the time limit has passed; false on
 // timeout.
 bool waitReadable(int fd, double seconds)
@@ -266,7 +264,7 @@ double reapChild(pid_t pid, int& waitStatus)
   const rlim_t cpu = static_cast<rlim_t>(std::ceil(cpuSeconds));
   const rlimit limit{ cpu, cpu + 1 };
   ::setrlimit(RLIMIT_CPU, &limit);
-  ChildHeader h;
+  TetGenChildHeader h;
   try
   {
     tetgenbehavior behaviour;
@@ -372,7 +370,7 @@ bool runTetGenIsolated(tetgenio& in, const std::string& switches, TimeLimits& li
     code = 0;
     return false;
   }
-  ChildHeader h;
+  TetGenChildHeader h;
   bool received = readAll(fds[0], &h, sizeof(h));
   if (received && h.status == 0)
   {
