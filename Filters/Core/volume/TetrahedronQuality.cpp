@@ -2,7 +2,12 @@
 
 namespace ptm
 {
-double smallestDihedralDegrees(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
+namespace
+{
+// The cosine of the angle between the two outward unit face normals of the
+// tetrahedron that point most apart (-1 if it is flat). Its smallest
+// dihedral angle is pi minus that angle, at the edge the two faces share.
+double mostOpposedNormals(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
 {
   const std::array<Vec3, 4> p{ a, b, c, d };
   // outward unit normal of the face opposite each vertex
@@ -20,14 +25,10 @@ double smallestDihedralDegrees(const Vec3& a, const Vec3& b, const Vec3& c, cons
     const double length = norm(n);
     if (!(length > 0))
     {
-      return 0.0;
+      return -1.0;
     }
     normal[f] = (1.0 / length) * n;
   }
-  // the dihedral angle at the edge shared by faces f and g is pi minus the
-  // angle between their outward normals, so the smallest is at the pair
-  // whose normals point most apart (one acos per tetrahedron, not six: the
-  // quality pass over a rank's tetrahedra took 3.7 % of its processor time)
   double lowest = 1.0;
   for (int f = 0; f < 4; ++f)
   {
@@ -36,38 +37,60 @@ double smallestDihedralDegrees(const Vec3& a, const Vec3& b, const Vec3& c, cons
       lowest = std::min(lowest, dot(normal[f], normal[g]));
     }
   }
-  return (kPi - std::acos(std::max(lowest, -1.0))) * 180.0 / kPi;
+  return std::max(lowest, -1.0);
 }
 
-namespace
+double degreesOf(double mostOpposed)
 {
-void count(const TetMesh& mesh, const std::array<Index, 4>& t, DihedralQuality& q)
-{
-  const double angle =
-    smallestDihedralDegrees(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], mesh.points[t[3]]);
-  ++q.tetrahedra;
-  q.below10Degrees += angle < 10.0 ? 1 : 0;
-  q.minimumDihedralDegrees = std::min(q.minimumDihedralDegrees, angle);
+  return (kPi - std::acos(mostOpposed)) * 180.0 / kPi;
 }
+
+// A smallest dihedral angle under 10 degrees is one whose normals are more
+// than 170 degrees apart: a tetrahedron is counted by comparing cosines,
+// and the angle is taken once, of the most opposed normals of all (an acos
+// per tetrahedron was 7 % of the quality pass).
+const double kCosine170Degrees = std::cos(170.0 * kPi / 180.0);
+
+struct Counter
+{
+  const TetMesh& mesh;
+  long long tetrahedra = 0, below10Degrees = 0;
+  double mostOpposed = 1.0;
+
+  void count(const std::array<Index, 4>& t)
+  {
+    const double cosine = mostOpposedNormals(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]], mesh.points[t[3]]);
+    ++tetrahedra;
+    below10Degrees += cosine < kCosine170Degrees ? 1 : 0;
+    mostOpposed = std::min(mostOpposed, cosine);
+  }
+
+  DihedralQuality quality() const { return { tetrahedra, below10Degrees, degreesOf(mostOpposed) }; }
+};
 } // namespace
+
+double smallestDihedralDegrees(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
+{
+  return degreesOf(mostOpposedNormals(a, b, c, d));
+}
 
 DihedralQuality dihedralQuality(const TetMesh& mesh)
 {
-  DihedralQuality q;
+  Counter counter{ mesh };
   for (const auto& t : mesh.tets)
   {
-    count(mesh, t, q);
+    counter.count(t);
   }
-  return q;
+  return counter.quality();
 }
 
 DihedralQuality dihedralQuality(const TetMesh& mesh, const std::vector<Index>& tets)
 {
-  DihedralQuality q;
+  Counter counter{ mesh };
   for (Index k : tets)
   {
-    count(mesh, mesh.tets[k], q);
+    counter.count(mesh.tets[k]);
   }
-  return q;
+  return counter.quality();
 }
 } // namespace ptm
