@@ -511,24 +511,29 @@ void assembleVolume(const OwnedSubdomains& owned, const MeshTotals& totals, cons
   subdomainIds->SetNumberOfValues(tetCount);
   vtkSmartPointer<vtkIntArray> ranks = vtk::TakeSmartPointer(newIntArray("Rank"));
   ranks->SetNumberOfValues(tetCount);
+  vtkIdType* offset = offsets->GetPointer(0);
+  vtkIdType* corner = connectivity->GetPointer(0);
+  vtkIdType* cellId = cellIds->GetPointer(0);
+  int* subdomain = subdomainIds->GetPointer(0);
   vtkIdType c = 0;
   for (std::size_t k = 0; k < owned.ids.size(); ++k)
   {
     const int s = owned.ids[k];
     const std::vector<std::array<ptm::Index, 4>>& tets = owned.meshes[k].tets;
+    const std::vector<vtkIdType>& localOfMesh = local[k];
     for (std::size_t t = 0; t < tets.size(); ++t, ++c)
     {
-      offsets->SetValue(c, 4 * c);
+      offset[c] = 4 * c;
       for (int j = 0; j < 4; ++j)
       {
-        connectivity->SetValue(4 * c + j, local[k][static_cast<std::size_t>(tets[t][j])]);
+        corner[4 * c + j] = localOfMesh[static_cast<std::size_t>(tets[t][j])];
       }
-      cellIds->SetValue(c, totals.offsets.firstTetrahedron[s] + static_cast<long long>(t));
-      subdomainIds->SetValue(c, s);
-      ranks->SetValue(c, rank);
+      cellId[c] = totals.offsets.firstTetrahedron[s] + static_cast<vtkIdType>(t);
+      subdomain[c] = s;
     }
   }
-  offsets->SetValue(tetCount, 4 * tetCount);
+  offset[tetCount] = 4 * tetCount;
+  ranks->FillValue(rank);
   vtkNew<vtkCellArray> cells;
   cells->SetData(offsets, connectivity);
 
