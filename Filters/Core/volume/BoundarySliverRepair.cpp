@@ -477,10 +477,10 @@ struct Remeshed
 // The tetrahedra of the kept parts replaced by their new ones. Points inside
 // a part no longer used are dropped and the interior points renumbered in
 // their order; the surface points keep their indices. The mesh is compacted
-// in place (a kept item never moves up, so each is read before it is
-// overwritten): building a second mesh and copying it back took 0.6 s of a
-// rank's 45 s on the 10 M ball at 2 ranks (perf, session 35), most of it in
-// growing the copy.
+// in place (a kept item only moves to a lower index, so it is read before
+// anything is written there): building a second mesh and moving it back
+// took 0.6 s of a rank's 45 s on the 10 M ball at 2 ranks (perf, session
+// 35), most of it in growing the copy.
 void spliceParts(TetMesh& mesh, const std::vector<char>& replaced, const Remeshed& run, std::size_t surfacePoints)
 {
   std::vector<char> kept(mesh.points.size(), 0);
