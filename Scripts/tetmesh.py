@@ -78,11 +78,12 @@ def parse_arguments(argv):
                    help="ParallelPlanes: refuse before cutting a K whose thinnest slab is under this fraction of the "
                    "size, naming the largest K that is not (default 0.25, the cutter's MinimumSlabThickness; 0: "
                    "never refuse)")
-    p.add_argument("--recut-attempts", type=int, default=4,
+    p.add_argument("--recut-attempts", type=int, default=5,
                    help="where a stage after the cut fails on a subdomain or an interface (one crossing itself, TetGen "
                    "failing on one), "
                    "cut again at most this many times, otherwise (keeping flat crossings, untilted planes, "
-                   "planes not turned to earlier lines, no thickness size), with a warning; 0 fails at once (default 4)")
+                   "planes not turned to earlier lines, no thickness size, and for ParallelPlanes last recursive "
+                   "bisection), with a warning; 0 fails at once (default 5)")
     p.add_argument("--no-thickness-size", action="store_true",
                    help="size the boundary by --size alone (default: edges no longer than the part is thick "
                    "where a wall is thinner than the size, measured by rays along the inward normals)")
@@ -242,7 +243,14 @@ def recut_changes(strategy, tilt, alignment, removed, thin_walls):
        Cura's BIQU_SSS bed at K = 64 with parallel planes crashed TetGen
        (add_steinerpt_in_segment) on subdomain 35 or 7 in every order after
        each cut above, stalled it on subdomain 32 without the thickness size
-       alone, and meshed with the crossings kept as well."""
+       alone, and meshed with the crossings kept as well.
+    5. Parallel planes only: recursive bisection instead, the last resort,
+       as it changes the kind of decomposition asked for. CUI's barrel jack
+       (KiCad) at K = 64 has steps 1.1e-6 high running along the planes'
+       normal, so every plane crosses them, and TetGen aborted on a slab
+       0.22 thick between two such crossings after every cut above;
+       bisection, whose parts are thicker and cut across, meshed it at
+       every K tried."""
     attempts = []
     if removed:
         attempts.append(({"RemoveFlatCrossings": 0},
@@ -260,6 +268,10 @@ def recut_changes(strategy, tilt, alignment, removed, thin_walls):
         attempts.append((change, "cutting again without sizing the boundary by the wall thickness "
                          "(--no-thickness-size%s): walls thinner than the size get coarser tetrahedra across them"
                          % (", --keep-flat-crossings" if removed else "")))
+    if strategy == "ParallelPlanes":
+        attempts.append(({"Strategy": "RecursiveBisection"},
+                         "cutting by recursive bisection instead of parallel planes (--strategy "
+                         "RecursiveBisection): its parts are thicker and are cut in more than one direction"))
     return attempts
 
 
@@ -284,6 +296,9 @@ def recut_if_stages_fail(run, errors, times, cutter, stages, strategy, most_recu
     raises the last failure if every attempt failed."""
     asked = {name: cutter.GetPropertyValue(name)
              for name in ("RemoveFlatCrossings", "PlaneTiltAngle", "PlaneAlignmentAngle", "SizeByThickness")}
+    # the name asked for: GetPropertyValue gives an enumeration as a live
+    # property, which would restore the value last set
+    asked["Strategy"] = strategy
     failed = []
     attempts = None
     while True:

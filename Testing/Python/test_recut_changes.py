@@ -7,8 +7,9 @@ BIQU_SSS bed at K = 64 with parallel planes needed the fourth, 7 min in
 all), and a change missing from an attempt makes it repeat a cut that
 already failed. Checks: no attempt repeats the cut as asked or another
 attempt; the thickness size is switched off only where the cutter measured
-thin walls, last, and with the flat crossings kept where the cut took some
-out; tilt is only undone for recursive bisection.
+thin walls, after the cut's own settings, and with the flat crossings kept
+where the cut took some out; tilt is only undone for recursive bisection;
+parallel planes give way to recursive bisection only last.
 """
 import os
 import sys
@@ -32,7 +33,9 @@ def main():
     expect("planes, crossings removed, thin walls",
            settings(tetmesh.recut_changes("ParallelPlanes", 5.0, 10.0, 12.0, True)),
            [{"RemoveFlatCrossings": 0}, {"PlaneTiltAngle": 0, "PlaneAlignmentAngle": 0},
-            {"SizeByThickness": 0, "RemoveFlatCrossings": 0}])
+            {"SizeByThickness": 0, "RemoveFlatCrossings": 0}, {"Strategy": "RecursiveBisection"}])
+    expect("planes, nothing else to change",
+           settings(tetmesh.recut_changes("ParallelPlanes", 0.0, 0.0, 0.0, False)), [{"Strategy": "RecursiveBisection"}])
     expect("bisection, nothing removed, thin walls",
            settings(tetmesh.recut_changes("RecursiveBisection", 5.0, 10.0, 0.0, True)),
            [{"PlaneTiltAngle": 0}, {"PlaneTiltAngle": 0, "PlaneAlignmentAngle": 0}, {"SizeByThickness": 0}])
