@@ -100,17 +100,6 @@ std::pair<double, double> starShortfallAt(
   return { deficit, -worst };
 }
 
-// The cap on new points of one region. From the smallest size at its
-// boundary alone (50 area / size^2, at most 2e7) it let a fuzzed part cut
-// across a slit 1e-9 wide and 0.5 long refine for minutes (Release; a
-// fuzzer timeout under the sanitizers, session 35): a slit needs about
-// length / width points for the angle bound, and each of them brought
-// more bad faces. A graded refinement needs far fewer: about 2.3 area /
-// size^2 at the target size and, where the boundary is subdivided at
-// that size (n points around), at most 0.2 n^2. So the cap is also at
-// most 50 area / target^2 or 4 n^2, whichever is more, plus 20 n + 1000;
-// regions the slit was not in keep their triangulations.
-
 // At most kMovesPerStep moves per step length: the step scales with the
 // nearest neighbour, and where that is a hair away in a wide star the
 // search crept across it in ever tinier gains (a fuzzed 7-point surface
@@ -647,9 +636,17 @@ void InterfaceMesher::prepareRefinement()
   }
   meanSpacing /= static_cast<double>(region.edges.size());
   largestSize = 1.5 * meanSpacing;
+  // The cap on new points. From the smallest size at the boundary alone
+  // (50 area / size^2, at most 2e7) it let a fuzzed part cut across a slit
+  // 1e-9 wide and 0.5 long refine for minutes (Release; a fuzzer timeout
+  // under the sanitizers, session 35): a slit needs about length / width
+  // points for the angle bound. A graded refinement needs far fewer: about
+  // 2.3 area / size^2 at the target size and, where the boundary is
+  // subdivided at that size (n points around), at most 0.2 n^2. So the cap
+  // is also at most 50 area / target^2 or 4 n^2, whichever is more, plus
+  // 20 n + 1000 (the meshes of the seven corpus and bundled runs compared
+  // that session were unchanged).
   cap = static_cast<std::size_t>(std::min(2e7, 50.0 * area / (smallestSize * smallestSize) + 20.0 * n + 100));
-  // and at most what a graded refinement needs, with room (see the
-  // comment on the cap above kMovesPerStep)
   const double target = options.maximumEdgeLength > 0 ? options.maximumEdgeLength : largestSize;
   const double points = static_cast<double>(n);
   const double graded = std::max(50.0 * area / (target * target), 4.0 * points * points);
