@@ -1,6 +1,7 @@
 #include "vtkCADSurfaceReader.h"
 
 #include "CADTessellation.h"
+#include "LibraryFolder.h"
 #include "PipelineRequests.h"
 #include "PolyDataConversion.h"
 #include "SurfaceComplexArrays.h"
@@ -23,19 +24,6 @@
 
 namespace
 {
-// The folder of the library this code is in (the plugin), with a slash.
-std::string folderOfThisLibrary()
-{
-  Dl_info info{};
-  if (::dladdr(reinterpret_cast<void*>(&folderOfThisLibrary), &info) == 0 || !info.dli_fname)
-  {
-    return "";
-  }
-  const std::string path = info.dli_fname;
-  const std::size_t slash = path.rfind('/');
-  return slash == std::string::npos ? "" : path.substr(0, slash + 1);
-}
-
 // ptmReadCADSurface from libptmcad.so (CADTessellation.h: why it is not
 // linked), opened once per process: beside the plugin, else where the build
 // made it. Null, with `error` naming both places, if neither opens.
@@ -44,7 +32,7 @@ ptm::ReadCADSurfaceFunction cadLibraryReader(std::string& error)
   static std::string failure;
   static const ptm::ReadCADSurfaceFunction read = [] {
     std::string tried;
-    for (const std::string& path : { folderOfThisLibrary() + "libptmcad.so", std::string(PTM_CAD_LIBRARY) })
+    for (const std::string& path : { ptm::folderOfThisLibrary() + "libptmcad.so", std::string(PTM_CAD_LIBRARY) })
     {
       if (void* library = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL))
       {

@@ -1,6 +1,7 @@
 #include "BoundarySliverRepair.h"
 #include "OffFormat.h"
 #include "TestSurfaces.h"
+#include "TetGenProcess.h"
 #include "TetGenStream.h"
 #include "TetGenSubdomainMesher.h"
 #include "TetrahedronQuality.h"
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <numeric>
 #include <set>
@@ -387,6 +389,94 @@ TEST(TetGenSubdomainMesher, AbortWhenRefiningIsMeshedInTwoRuns)
   const TetMeshingResult sized = meshClosedSurface(surface, options);
   EXPECT_TRUE(sized.recoveredThenRefined);
   expectConformingMesh(surface, sized, "recovered, then refined with a size field");
+}
+
+// Every TetGen run happens in ptm-tetgen (TetGenProcess.h); with
+// PTM_TETGEN_WORKER empty the caller is forked instead, as before session
+// 36. Both must give the same mesh bit for bit, on each kind of request the
+// mesher makes: a surface (-p) with sizes at its points and a cavity's hole
+// point, a mesh to refine (-r, the two-run fall-back), and points to insert
+// (-i, the sliver repair).
+namespace
+{
+struct WorkerChoice
+{
+  explicit WorkerChoice(const char* path) { ::setenv("PTM_TETGEN_WORKER", path, 1); }
+  ~WorkerChoice() { ::unsetenv("PTM_TETGEN_WORKER"); }
+};
+
+void expectSameMeshForkedAndSpawned(const TriangleSurface& s, const TetMeshingOptions& options,
+  const std::string& label)
+{
+  const TetMeshingResult spawned = meshClosedSurface(s, options);
+  TetMeshingResult forked;
+  {
+    const WorkerChoice fork("");
+    EXPECT_TRUE(tetgenWorkerPath().empty());
+    forked = meshClosedSurface(s, options);
+  }
+  ASSERT_TRUE(spawned.ok) << label << ": " << spawned.error;
+  ASSERT_TRUE(forked.ok) << label << ": " << forked.error;
+  EXPECT_EQ(spawned.mesh.points, forked.mesh.points) << label;
+  EXPECT_EQ(spawned.mesh.tets, forked.mesh.tets) << label;
+  EXPECT_EQ(spawned.recoveredThenRefined, forked.recoveredThenRefined) << label;
+  EXPECT_EQ(spawned.sliverRepairPoints, forked.sliverRepairPoints) << label;
+}
+} // namespace
+
+TEST(TetGenProcess, TheWorkerIsFoundAndMeshesAsAForkDoes)
+{
+  ASSERT_FALSE(tetgenWorkerPath().empty()) << "ptm-tetgen is not where the build made it";
+  const TriangleSurface cavity =
+    merged(subdividedBox({ -2, -2, -2 }, { 2, 2, 2 }, 4), flipped(icosphere({ 0, 0, 0 }, 1.0, 2)));
+  TetMeshingOptions sized = boundedOptions(0.05);
+  sized.pointSizes.assign(cavity.points.size(), 0.4);
+  expectSameMeshForkedAndSpawned(cavity, sized, "-p with sizes and a hole");
+
+  TetMeshingOptions twoRuns = boundedOptions(5.0097439922402185e-06);
+  twoRuns.inputOrders = 3;
+  const TriangleSurface refined = regressionSurface("tetgen_abort_when_refining.off");
+  ASSERT_TRUE(meshClosedSurface(refined, twoRuns).recoveredThenRefined);
+  expectSameMeshForkedAndSpawned(refined, twoRuns, "-r after -pY");
+
+  TetMeshingOptions repair = boundedOptions(std::pow(0.03988, 3) / (6 * std::sqrt(2.0)));
+  repair.sliverRepairAngle = 5;
+  const TriangleSurface ear = regressionSurface("tetgen_leaves_an_ear.off");
+  ASSERT_GT(meshClosedSurface(ear, repair).sliverRepairPoints, 0);
+  expectSameMeshForkedAndSpawned(ear, repair, "-i in the sliver repair");
+}
+
+// A worker named but missing is no worker: the caller forks, and meshes.
+TEST(TetGenProcess, AMissingWorkerFallsBackToAFork)
+{
+  const WorkerChoice missing("/nonexistent/ptm-tetgen");
+  EXPECT_TRUE(tetgenWorkerPath().empty());
+  const TriangleSurface ball = icosphere({ 0, 0, 0 }, 1.0, 2);
+  expectConformingMesh(ball, meshClosedSurface(ball, {}), "forked");
+}
+
+// The worker is sent only what the mesher fills; anything else is refused
+// by name before a process starts, never silently dropped.
+TEST(TetGenProcess, AListTheWorkerIsNotSentIsRefused)
+{
+  tetgenio in;
+  in.numberofpoints = 1;
+  in.pointlist = new REAL[3]{ 0, 0, 0 };
+  in.pointmarkerlist = new int[1]{ 7 };
+  TetGenProcess process;
+  std::string error;
+  EXPECT_FALSE(startTetGenProcess({ &in, nullptr, "pQ", 10.0, nullptr }, process, error));
+  EXPECT_NE(error.find("point attributes, markers or parameters"), std::string::npos) << error;
+  EXPECT_EQ(process.pid, -1);
+}
+
+// Started by hand, the worker says what it is for and does nothing.
+TEST(TetGenProcess, TheWorkerByHandExplainsItself)
+{
+  const std::string command = tetgenWorkerPath() + " 2>/dev/null";
+  EXPECT_EQ(WEXITSTATUS(std::system(command.c_str())), 2);
+  const std::string empty = "echo nothing | " + tetgenWorkerPath() + " 0 -1 2>/dev/null";
+  EXPECT_EQ(WEXITSTATUS(std::system(empty.c_str())), 1);
 }
 
 TEST(TetGenSubdomainMesher, FlatTetrahedraOnTheSurfaceAreRepairedInCavities)

@@ -4,6 +4,7 @@
 
 #include <cerrno>
 #include <ctime>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -203,24 +204,35 @@ void fillTetGenInput(const TriangleSurface& s, const std::vector<Index>& order,
   }
 }
 
-bool writeAllBytes(int fd, const void* data, std::size_t bytes)
+bool transferAllBytes(std::size_t bytes, const std::function<long(std::size_t done, std::size_t left)>& step)
 {
-  const char* p = static_cast<const char*>(data);
-  while (bytes > 0)
+  std::size_t done = 0;
+  while (done < bytes)
   {
-    const ssize_t w = ::write(fd, p, bytes);
-    if (w < 0 && errno == EINTR)
+    const long moved = step(done, bytes - done);
+    if (moved < 0 && errno == EINTR)
     {
       continue;
     }
-    if (w <= 0)
+    if (moved <= 0)
     {
       return false;
     }
-    p += w;
-    bytes -= static_cast<std::size_t>(w);
+    done += static_cast<std::size_t>(moved);
   }
   return true;
+}
+
+bool writeAllBytes(int fd, const void* data, std::size_t bytes)
+{
+  const char* p = static_cast<const char*>(data);
+  return transferAllBytes(bytes, [&](std::size_t done, std::size_t left) { return ::write(fd, p + done, left); });
+}
+
+bool readAllBytes(int fd, void* data, std::size_t bytes)
+{
+  char* p = static_cast<char*>(data);
+  return transferAllBytes(bytes, [&](std::size_t done, std::size_t left) { return ::read(fd, p + done, left); });
 }
 
 bool tetrahedralizeToPipe(tetgenbehavior& b, tetgenio& in, tetgenio* addin, int fd)

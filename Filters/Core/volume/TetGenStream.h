@@ -35,6 +35,7 @@
 #include <tetgen.h>
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace ptm
@@ -53,8 +54,16 @@ void fillTetGenInput(const TriangleSurface& s, const std::vector<Index>& order,
 
 bool tetrahedralizeToPipe(tetgenbehavior& b, tetgenio& in, tetgenio* addin, int fd);
 
-// Writes `bytes` of `data` to fd, through interrupted and partial writes;
-// false if the pipe broke.
+// Moves `bytes` with `step(done, left)`, a read, write or send of at most
+// `left` bytes after the first `done` that returns how many it moved,
+// through interrupted and partial steps; false at end of file (a step
+// moving 0) or on an error.
+bool transferAllBytes(std::size_t bytes, const std::function<long(std::size_t done, std::size_t left)>& step);
+
+// Writes `bytes` of `data` to fd; false if the pipe broke.
 bool writeAllBytes(int fd, const void* data, std::size_t bytes);
+
+// Reads exactly `bytes` from fd; false at end of file or on an error.
+bool readAllBytes(int fd, void* data, std::size_t bytes);
 } // namespace ptm
 #endif

@@ -3,6 +3,7 @@
 #include "BoundarySliverRepair.h"
 #include "Fnv1a.h"
 #include "SelfIntersectionCheck.h"
+#include "TetGenProcess.h"
 #include "TetGenStream.h"
 #include "TetrahedronQuality.h"
 
@@ -152,26 +153,6 @@ bool validExtraSwitches(const std::string& s)
   }
   return true;
 }
-bool readAll(int fd, void* data, std::size_t bytes)
-{
-  char* p = static_cast<char*>(data);
-  while (bytes > 0)
-  {
-    const ssize_t r = ::read(fd, p, bytes);
-    if (r < 0 && errno == EINTR)
-    {
-      continue;
-    }
-    if (r <= 0)
-    {
-      return false;
-    }
-    p += r;
-    bytes -= static_cast<std::size_t>(r);
-  }
-  return true;
-}
-
 // The time TetGen may take on one surface: each run's limits, and the
 // processor time all its runs together may use (TetMeshingOptions::
 // processorBudgetSeconds), with what they have used so far.
@@ -250,67 +231,11 @@ double reapChild(pid_t pid, int& waitStatus)
   return seconds(usage.ru_utime) + seconds(usage.ru_stime);
 }
 
-// The TetGen process of runTetGenIsolated: meshes `in` with `switches`
-// under the processor-time limit, writes TetGen's phase lines to `phases`
-// (if any) and the result to `fd`, and ends.
-[[noreturn]] void runTetGenChild(tetgenio& in, const std::string& switches, double cpuSeconds, std::FILE* phases,
-  int fd, tetgenio* addin)
-{
-  std::signal(SIGSEGV, SIG_DFL);
-  std::signal(SIGABRT, SIG_DFL);
-  std::signal(SIGBUS, SIG_DFL);
-  std::signal(SIGXCPU, SIG_DFL);
-  // SIGXCPU at the soft limit, SIGKILL a second later
-  const rlim_t cpu = static_cast<rlim_t>(std::ceil(cpuSeconds));
-  const rlimit limit{ cpu, cpu + 1 };
-  ::setrlimit(RLIMIT_CPU, &limit);
-  TetGenChildHeader h;
-  try
-  {
-    tetgenbehavior behaviour;
-    std::vector<char> text(switches.begin(), switches.end());
-    text.push_back('\0');
-    if (!behaviour.parse_commandline(text.data()))
-    {
-      h.status = 3;
-    }
-    else
-    {
-      if (phases && ::dup2(::fileno(phases), STDOUT_FILENO) >= 0)
-      {
-        std::setvbuf(stdout, nullptr, _IONBF, 0);
-        behaviour.quiet = 0; // its phase lines only: nothing else changes
-      }
-      // the mesh goes to the parent from TetGen's pools (TetGenStream.h)
-      const bool sent = tetrahedralizeToPipe(behaviour, in, addin, fd);
-      ::close(fd);
-      ::_exit(sent ? 0 : 1);
-    }
-  }
-  catch (int c)
-  {
-    h.status = 1;
-    h.code = c;
-  }
-  catch (const std::bad_alloc&)
-  {
-    h.status = 2;
-  }
-  catch (...)
-  {
-    h.status = 1;
-    h.code = 2;
-  }
-  // a failure: the header alone
-  const bool ok = writeAllBytes(fd, &h, sizeof(h));
-  ::close(fd);
-  ::_exit(ok ? 0 : 1);
-}
-
 // Runs TetGen in a child process: libtet 1.5 frees its memory in
 // terminatetetgen() and again in the destructor while the int it throws
 // unwinds, so every TetGen failure would otherwise crash the whole
-// (MPI, ParaView) process. The child sends the mesh back through a pipe. On
+// (MPI, ParaView) process. The process (TetGenProcess.h: ptm-tetgen, or a
+// fork where it is missing) sends the mesh back through a socket or pipe. On
 // some inputs TetGen 1.5 loops for ever in boundary recovery (switch Y):
 // a child that has used more than cpuSeconds of processor time is stopped by
 // the kernel (RLIMIT_CPU, so a loaded or oversubscribed machine does not
@@ -330,34 +255,19 @@ bool runTetGenIsolated(tetgenio& in, const std::string& switches, TimeLimits& li
     code = 0;
     return false;
   }
-  int fds[2];
-  if (::pipe(fds) != 0)
-  {
-    error = "cannot create a pipe for the TetGen process";
-    return false;
-  }
   // closed when the run ends, whichever way
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> phases(std::tmpfile(), &std::fclose);
-  const pid_t pid = ::fork();
-  if (pid < 0)
+  TetGenProcess process;
+  if (!startTetGenProcess({ &in, addin, switches, cpuSeconds, phases.get() }, process, error))
   {
-    ::close(fds[0]);
-    ::close(fds[1]);
-    error = "cannot start a process for TetGen (fork failed)";
     return false;
   }
-  if (pid == 0)
+  if (!waitReadable(process.fd, wallSeconds))
   {
-    ::close(fds[0]);
-    runTetGenChild(in, switches, cpuSeconds, phases.get(), fds[1], addin);
-  }
-  ::close(fds[1]);
-  if (!waitReadable(fds[0], wallSeconds))
-  {
-    ::kill(pid, SIGKILL);
-    ::close(fds[0]);
+    ::kill(process.pid, SIGKILL);
+    ::close(process.fd);
     int ignored = 0;
-    limits.spent += reapChild(pid, ignored);
+    limits.spent += reapChild(process.pid, ignored);
     ++limits.stopped;
     limits.stoppedAfterRecovery = pastBoundaryRecovery(phases.get());
     std::ostringstream msg;
@@ -371,17 +281,17 @@ bool runTetGenIsolated(tetgenio& in, const std::string& switches, TimeLimits& li
     return false;
   }
   TetGenChildHeader h;
-  bool received = readAll(fds[0], &h, sizeof(h));
+  bool received = readAllBytes(process.fd, &h, sizeof(h));
   if (received && h.status == 0)
   {
     points.resize(3 * static_cast<std::size_t>(h.points));
     tets.resize(4 * static_cast<std::size_t>(h.tets));
-    received = readAll(fds[0], points.data(), sizeof(double) * points.size()) &&
-      readAll(fds[0], tets.data(), sizeof(int) * tets.size());
+    received = readAllBytes(process.fd, points.data(), sizeof(double) * points.size()) &&
+      readAllBytes(process.fd, tets.data(), sizeof(int) * tets.size());
   }
-  ::close(fds[0]);
+  ::close(process.fd);
   int waitStatus = 0;
-  limits.spent += reapChild(pid, waitStatus);
+  limits.spent += reapChild(process.pid, waitStatus);
   if (!received)
   {
     if (WIFSIGNALED(waitStatus) && WTERMSIG(waitStatus) == SIGXCPU)

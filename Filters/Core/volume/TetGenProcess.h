@@ -1,0 +1,76 @@
+#ifndef PTM_TETGEN_PROCESS_H
+#define PTM_TETGEN_PROCESS_H
+// The process every TetGen run happens in (TetGenSubdomainMesher.cpp says
+// why TetGen never runs in the caller's process).
+//
+// Why a process of its own, started from a small program, and not a fork of
+// the caller. A fork starts with every resident page of the caller mapped,
+// and those pages count in its peak memory. A pvbatch rank holds 130-220 MB
+// of its own when its TetGen child starts (ParaView, Python, the surface
+// complex), and the child's peak was each rank's peak: on the 9.8 M ball at
+// K = 2 on 2 ranks 969 / 939 MB, of which 170 / 132 MB were the rank's
+// (session 36, VmRSS sampled every 0.25 s). `ptm-tetgen`, built beside the
+// plugin, holds only libtet and the request.
+//
+// Contract.
+//  * startTetGenProcess starts `ptm-tetgen` (tetgenWorkerPath) with one
+//    end of a socket pair and hands it the request: `in`, `addin`, the
+//    switches and the processor-time limit. Carried are the fields the
+//    mesher fills (points, sizes at the points, facets of polygons, holes,
+//    tetrahedra, faces, edges, and addin's points); a request with any other
+//    list set (markers, regions, attributes) is refused before a process
+//    starts. Where no worker is found, or it cannot be started, the caller is
+//    forked instead and the child runs the same runTetGenChild.
+//  * Either way the process writes exactly what runTetGenChild writes
+//    (TetGenStream.h: a header, then the points and the tetrahedra) to the
+//    returned descriptor, and TetGen's phase lines to `phases` (if given),
+//    then ends. The caller reads, reaps the process and closes the
+//    descriptor. The same request gives the same mesh bit for bit in either
+//    kind of process (TetGenProcess tests in TetGenSubdomainMesherTest.cpp).
+#include <tetgen.h>
+
+#include <cstdio>
+#include <string>
+#include <sys/types.h>
+
+namespace ptm
+{
+// What the TetGen process is asked to do.
+struct TetGenRequest
+{
+  tetgenio* in = nullptr;     // the surface (-p) or mesh (-r)
+  tetgenio* addin = nullptr;  // points to insert (-i), or null
+  std::string switches;       // TetGen's command line, without the dash
+  double cpuSeconds = 0;      // its processor-time limit (RLIMIT_CPU)
+  std::FILE* phases = nullptr; // where its phase lines go, or null
+};
+
+// A started TetGen process.
+struct TetGenProcess
+{
+  pid_t pid = -1;
+  int fd = -1;          // its result arrives here
+  bool spawned = false; // ptm-tetgen (true) or a fork of the caller
+};
+
+// The worker program to run: $PTM_TETGEN_WORKER if set (empty: always fork),
+// else `ptm-tetgen` beside the library this code is in (the plugin), else
+// where the build made it; empty if none of these is an executable file.
+std::string tetgenWorkerPath();
+
+// Starts the process and hands it the request. False, with `error`, if no
+// process could be started or the request carries fields the worker does
+// not (see above).
+bool startTetGenProcess(const TetGenRequest& request, TetGenProcess& process, std::string& error);
+
+// The body of the TetGen process: meshes request.in under the limit,
+// writes the result to `fd`, and ends the process (ptm-tetgen's main and
+// the forked child both end here).
+[[noreturn]] void runTetGenChild(const TetGenRequest& request, int fd);
+
+// ptm-tetgen's side: reads a request startTetGenProcess wrote to `fd` into
+// `in` and `addin` (used if request.addin is set); false if it is cut short
+// or malformed.
+bool readTetGenRequest(int fd, tetgenio& in, tetgenio& addin, TetGenRequest& request);
+} // namespace ptm
+#endif
