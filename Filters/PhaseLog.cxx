@@ -13,7 +13,7 @@ namespace ptm::phases
 namespace
 {
 // of this process and of the children it waited for: the mesher runs
-// TetGen in forked processes (TetGenSubdomainMesher.h)
+// TetGen in processes of its own (TetGenProcess.h)
 double processorSeconds()
 {
   double seconds = 0;

@@ -1,8 +1,8 @@
 #ifndef PTM_TETGEN_STREAM_H
 #define PTM_TETGEN_STREAM_H
-// TetGen's meshing run inside the child process (TetGenSubdomainMesher.cpp
-// forks one per run), with the mesh sent to the parent straight from
-// TetGen's own pools.
+// TetGen's meshing run inside its own process (TetGenProcess.h: ptm-tetgen,
+// one per run), with the mesh sent to the rank straight from TetGen's own
+// pools.
 //
 // Why: tetrahedralize() copies the finished mesh into its output tetgenio
 // (points 24 bytes, tetrahedra 16 bytes each) while its pools still hold it,
