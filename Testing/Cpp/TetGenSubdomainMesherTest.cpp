@@ -470,6 +470,83 @@ TEST(TetGenProcess, AListTheWorkerIsNotSentIsRefused)
   EXPECT_EQ(process.pid, -1);
 }
 
+namespace
+{
+// The bytes of a file descriptor's file from its start.
+std::vector<char> fileBytes(int fd)
+{
+  std::vector<char> bytes(static_cast<std::size_t>(::lseek(fd, 0, SEEK_END)));
+  ::lseek(fd, 0, SEEK_SET);
+  EXPECT_TRUE(readAllBytes(fd, bytes.data(), bytes.size()));
+  return bytes;
+}
+
+// A temporary file holding `bytes`, positioned at its start.
+std::FILE* fileWith(const std::vector<char>& bytes, std::size_t length)
+{
+  std::FILE* f = std::tmpfile();
+  EXPECT_TRUE(writeAllBytes(::fileno(f), bytes.data(), length));
+  ::lseek(::fileno(f), 0, SEEK_SET);
+  return f;
+}
+} // namespace
+
+// The request arrives as sent: every list the mesher fills, bit for bit; a
+// request cut short anywhere is refused and what was read so far is freed
+// (the sanitizer build checks the freeing).
+TEST(TetGenProcess, ARequestArrivesWholeOrIsRefused)
+{
+  const TriangleSurface s = icosphere({ 0, 0, 0 }, 1.0, 1);
+  tetgenio in, addin;
+  std::vector<Index> order(s.points.size()), facets(s.triangles.size());
+  std::iota(order.begin(), order.end(), Index{ 0 });
+  std::iota(facets.begin(), facets.end(), Index{ 0 });
+  std::vector<int> position(s.points.size());
+  std::iota(position.begin(), position.end(), 0);
+  fillTetGenInput(s, order, position, facets, { Vec3{ 0.1, 0.2, 0.3 } }, std::vector<double>(s.points.size(), 0.25), in);
+  addin.numberofpoints = 1;
+  addin.pointlist = new REAL[3]{ 0.01, 0.02, 0.03 };
+  std::FILE* sent = std::tmpfile();
+  ASSERT_TRUE(writeTetGenRequest(::fileno(sent), { &in, &addin, "pYq2.0Q", 12.5, nullptr }));
+  const std::vector<char> bytes = fileBytes(::fileno(sent));
+  std::fclose(sent);
+
+  std::FILE* whole = fileWith(bytes, bytes.size());
+  tetgenio got, gotAddin;
+  TetGenRequest request;
+  ASSERT_TRUE(readTetGenRequest(::fileno(whole), got, gotAddin, request));
+  std::fclose(whole);
+  EXPECT_EQ(request.switches, "pYq2.0Q");
+  EXPECT_EQ(request.cpuSeconds, 12.5);
+  ASSERT_EQ(got.numberofpoints, in.numberofpoints);
+  EXPECT_EQ(0, std::memcmp(got.pointlist, in.pointlist, sizeof(REAL) * 3 * in.numberofpoints));
+  ASSERT_EQ(got.numberofpointmtrs, 1);
+  EXPECT_EQ(0, std::memcmp(got.pointmtrlist, in.pointmtrlist, sizeof(REAL) * in.numberofpoints));
+  ASSERT_EQ(got.numberoffacets, in.numberoffacets);
+  for (int f = 0; f < in.numberoffacets; ++f)
+  {
+    ASSERT_EQ(got.facetlist[f].numberofpolygons, 1);
+    ASSERT_EQ(got.facetlist[f].polygonlist[0].numberofvertices, 3);
+    EXPECT_EQ(0, std::memcmp(got.facetlist[f].polygonlist[0].vertexlist, in.facetlist[f].polygonlist[0].vertexlist,
+                   3 * sizeof(int)));
+  }
+  ASSERT_EQ(got.numberofholes, 1);
+  EXPECT_EQ(got.holelist[2], 0.3);
+  ASSERT_TRUE(request.addin);
+  ASSERT_EQ(gotAddin.numberofpoints, 1);
+  EXPECT_EQ(gotAddin.pointlist[1], 0.02);
+
+  for (std::size_t cut : { std::size_t{ 0 }, std::size_t{ 7 }, std::size_t{ 60 }, bytes.size() / 3,
+         bytes.size() / 2, bytes.size() - 25, bytes.size() - 1 })
+  {
+    std::FILE* part = fileWith(bytes, cut);
+    tetgenio partIn, partAddin;
+    TetGenRequest partRequest;
+    EXPECT_FALSE(readTetGenRequest(::fileno(part), partIn, partAddin, partRequest)) << cut << " bytes";
+    std::fclose(part);
+  }
+}
+
 // Started by hand, the worker says what it is for and does nothing.
 TEST(TetGenProcess, TheWorkerByHandExplainsItself)
 {

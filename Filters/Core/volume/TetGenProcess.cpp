@@ -93,46 +93,21 @@ std::vector<int> facetInts(const tetgenio& in)
 }
 
 // send() with MSG_NOSIGNAL: a worker that died has closed its end, and a
-// write() would raise SIGPIPE, which ends the rank.
+// write() would raise SIGPIPE, which ends the rank. Not a socket (a file,
+// in the tests): write().
 bool sendAllBytes(int fd, const void* data, std::size_t bytes)
 {
   const char* p = static_cast<const char*>(data);
-  return transferAllBytes(
-    bytes, [&](std::size_t done, std::size_t left) { return ::send(fd, p + done, left, MSG_NOSIGNAL); });
+  return transferAllBytes(bytes, [&](std::size_t done, std::size_t left) {
+    const ssize_t sent = ::send(fd, p + done, left, MSG_NOSIGNAL);
+    return sent < 0 && errno == ENOTSOCK ? ::write(fd, p + done, left) : sent;
+  });
 }
 
 template <typename T>
 bool sendList(int fd, const T* data, std::size_t count)
 {
   return count == 0 || sendAllBytes(fd, data, sizeof(T) * count);
-}
-
-bool writeRequest(int fd, const TetGenRequest& r)
-{
-  const tetgenio& in = *r.in;
-  const std::vector<int> facets = facetInts(in);
-  RequestHeader h;
-  std::memcpy(h.magic, kRequestMagic, sizeof(h.magic));
-  h.cpuSeconds = r.cpuSeconds;
-  h.switchesLength = static_cast<std::int64_t>(r.switches.size());
-  h.facetInts = static_cast<std::int64_t>(facets.size());
-  h.firstnumber = in.firstnumber;
-  h.points = in.numberofpoints;
-  h.pointmtrs = in.pointmtrlist ? in.numberofpointmtrs : 0;
-  h.facets = in.numberoffacets;
-  h.holes = in.numberofholes;
-  h.corners = in.numberofcorners;
-  h.tetrahedra = in.tetrahedronlist ? in.numberoftetrahedra : 0;
-  h.trifaces = in.trifacelist ? in.numberoftrifaces : 0;
-  h.edges = in.edgelist ? in.numberofedges : 0;
-  h.insertedPoints = r.addin ? r.addin->numberofpoints : -1;
-  const auto n = [](int count, int width) { return static_cast<std::size_t>(count) * static_cast<std::size_t>(width); };
-  return sendAllBytes(fd, &h, sizeof(h)) && sendList(fd, r.switches.data(), r.switches.size()) &&
-    sendList(fd, in.pointlist, n(h.points, 3)) && sendList(fd, in.pointmtrlist, n(h.points, h.pointmtrs)) &&
-    sendList(fd, facets.data(), facets.size()) && sendList(fd, in.holelist, n(h.holes, 3)) &&
-    sendList(fd, in.tetrahedronlist, n(h.tetrahedra, h.corners)) && sendList(fd, in.trifacelist, n(h.trifaces, 3)) &&
-    sendList(fd, in.edgelist, n(h.edges, 2)) &&
-    (!r.addin || sendList(fd, r.addin->pointlist, n(r.addin->numberofpoints, 3)));
 }
 
 // Reads `count` values into a new[] array (tetgenio's destructor frees it
@@ -149,13 +124,19 @@ bool receiveList(int fd, std::size_t count, T*& list)
   return list && readAllBytes(fd, list, sizeof(T) * count);
 }
 
+// Every facet and polygon is initialised before its counts are read, so
+// that tetgenio's destructor frees a list cut short cleanly.
 bool facetsFromInts(const std::vector<int>& ints, int count, tetgenio& in)
 {
-  in.numberoffacets = count;
   in.facetlist = count > 0 ? new tetgenio::facet[static_cast<std::size_t>(count)] : nullptr;
+  for (int f = 0; f < count; ++f)
+  {
+    tetgenio::init(&in.facetlist[f]);
+  }
+  in.numberoffacets = count;
   std::size_t at = 0;
   const auto next = [&](int& value) {
-    if (at >= ints.size())
+    if (at >= ints.size() || ints[at] < 0)
     {
       return false;
     }
@@ -165,25 +146,30 @@ bool facetsFromInts(const std::vector<int>& ints, int count, tetgenio& in)
   for (int f = 0; f < count; ++f)
   {
     tetgenio::facet& facet = in.facetlist[f];
-    tetgenio::init(&facet);
-    if (!next(facet.numberofpolygons) || facet.numberofpolygons < 0)
+    int polygons = 0;
+    if (!next(polygons))
     {
       return false;
     }
-    facet.polygonlist = new tetgenio::polygon[static_cast<std::size_t>(facet.numberofpolygons)];
-    for (int p = 0; p < facet.numberofpolygons; ++p)
+    facet.polygonlist = new tetgenio::polygon[static_cast<std::size_t>(polygons)];
+    for (int p = 0; p < polygons; ++p)
+    {
+      tetgenio::init(&facet.polygonlist[p]);
+    }
+    facet.numberofpolygons = polygons;
+    for (int p = 0; p < polygons; ++p)
     {
       tetgenio::polygon& polygon = facet.polygonlist[p];
-      tetgenio::init(&polygon);
-      if (!next(polygon.numberofvertices) || polygon.numberofvertices < 0 ||
-        ints.size() - at < static_cast<std::size_t>(polygon.numberofvertices))
+      int vertices = 0;
+      if (!next(vertices) || ints.size() - at < static_cast<std::size_t>(vertices))
       {
         return false;
       }
-      polygon.vertexlist = new int[static_cast<std::size_t>(polygon.numberofvertices)];
+      polygon.vertexlist = new int[static_cast<std::size_t>(vertices)];
       std::copy(ints.begin() + static_cast<std::ptrdiff_t>(at),
-        ints.begin() + static_cast<std::ptrdiff_t>(at) + polygon.numberofvertices, polygon.vertexlist);
-      at += static_cast<std::size_t>(polygon.numberofvertices);
+        ints.begin() + static_cast<std::ptrdiff_t>(at + static_cast<std::size_t>(vertices)), polygon.vertexlist);
+      polygon.numberofvertices = vertices;
+      at += static_cast<std::size_t>(vertices);
     }
   }
   return at == ints.size();
@@ -240,7 +226,7 @@ bool spawnWorker(const std::string& worker, const TetGenRequest& request, TetGen
   process.spawned = true;
   // if the worker ends early the sending fails; the caller then finds no
   // result and reports the worker's wait status
-  writeRequest(process.fd, request);
+  writeTetGenRequest(process.fd, request);
   return true;
 }
 
@@ -359,6 +345,34 @@ void runTetGenChild(const TetGenRequest& request, int fd)
   const bool ok = writeAllBytes(fd, &h, sizeof(h));
   ::close(fd);
   ::_exit(ok ? 0 : 1);
+}
+
+bool writeTetGenRequest(int fd, const TetGenRequest& r)
+{
+  const tetgenio& in = *r.in;
+  const std::vector<int> facets = facetInts(in);
+  RequestHeader h;
+  std::memcpy(h.magic, kRequestMagic, sizeof(h.magic));
+  h.cpuSeconds = r.cpuSeconds;
+  h.switchesLength = static_cast<std::int64_t>(r.switches.size());
+  h.facetInts = static_cast<std::int64_t>(facets.size());
+  h.firstnumber = in.firstnumber;
+  h.points = in.numberofpoints;
+  h.pointmtrs = in.pointmtrlist ? in.numberofpointmtrs : 0;
+  h.facets = in.numberoffacets;
+  h.holes = in.numberofholes;
+  h.corners = in.numberofcorners;
+  h.tetrahedra = in.tetrahedronlist ? in.numberoftetrahedra : 0;
+  h.trifaces = in.trifacelist ? in.numberoftrifaces : 0;
+  h.edges = in.edgelist ? in.numberofedges : 0;
+  h.insertedPoints = r.addin ? r.addin->numberofpoints : -1;
+  const auto n = [](int count, int width) { return static_cast<std::size_t>(count) * static_cast<std::size_t>(width); };
+  return sendAllBytes(fd, &h, sizeof(h)) && sendList(fd, r.switches.data(), r.switches.size()) &&
+    sendList(fd, in.pointlist, n(h.points, 3)) && sendList(fd, in.pointmtrlist, n(h.points, h.pointmtrs)) &&
+    sendList(fd, facets.data(), facets.size()) && sendList(fd, in.holelist, n(h.holes, 3)) &&
+    sendList(fd, in.tetrahedronlist, n(h.tetrahedra, h.corners)) && sendList(fd, in.trifacelist, n(h.trifaces, 3)) &&
+    sendList(fd, in.edgelist, n(h.edges, 2)) &&
+    (!r.addin || sendList(fd, r.addin->pointlist, n(r.addin->numberofpoints, 3)));
 }
 
 bool readTetGenRequest(int fd, tetgenio& in, tetgenio& addin, TetGenRequest& request)

@@ -4,13 +4,23 @@
 // why TetGen never runs in the caller's process).
 //
 // Why a process of its own, started from a small program, and not a fork of
-// the caller. A fork starts with every resident page of the caller mapped,
-// and those pages count in its peak memory. A pvbatch rank holds 130-220 MB
-// of its own when its TetGen child starts (ParaView, Python, the surface
-// complex), and the child's peak was each rank's peak: on the 9.8 M ball at
-// K = 2 on 2 ranks 969 / 939 MB, of which 170 / 132 MB were the rank's
-// (session 36, VmRSS sampled every 0.25 s). `ptm-tetgen`, built beside the
-// plugin, holds only libtet and the request.
+// the caller.
+//  * Forking an MPI rank is unsafe on the clusters pvserver runs on. Open
+//    MPI's documentation asks MPI programs not to fork (for UCX and
+//    Libfabric); ibv_fork_init(3) says why on InfiniBand: after a fork the
+//    rank's writes to memory registered for RDMA land in copies the network
+//    card does not see, unless the child execs at once. And in the child of
+//    a process with threads (PMIx's, ParaView's) a lock may stay held that
+//    no thread will release. posix_spawn execs at once, with nothing of the
+//    rank.
+//  * A fork starts with every resident page of the rank mapped, shared but
+//    counted in the child's resident size: on the 9.8 M ball at K = 2 on 2
+//    ranks the child's peak, 969 / 939 MB, was each rank's peak by
+//    /usr/bin/time, and 170 / 132 MB of it were the rank's pages (session
+//    36, VmRSS sampled every 0.25 s). `ptm-tetgen` holds only libtet and the
+//    request: 843 / 844 MB. The memory the rank and its TetGen process take
+//    together is not smaller: 1322 / 1246 MB at that peak, about 40 MB more
+//    than with the fork, whose shared pages counted once.
 //
 // Contract.
 //  * startTetGenProcess starts `ptm-tetgen` (tetgenWorkerPath) with one
@@ -68,7 +78,11 @@ bool startTetGenProcess(const TetGenRequest& request, TetGenProcess& process, st
 // the forked child both end here).
 [[noreturn]] void runTetGenChild(const TetGenRequest& request, int fd);
 
-// ptm-tetgen's side: reads a request startTetGenProcess wrote to `fd` into
+// The request on the wire: what startTetGenProcess sends the worker. False
+// if the other end closed first.
+bool writeTetGenRequest(int fd, const TetGenRequest& request);
+
+// ptm-tetgen's side: reads a request writeTetGenRequest wrote to `fd` into
 // `in` and `addin` (used if request.addin is set); false if it is cut short
 // or malformed.
 bool readTetGenRequest(int fd, tetgenio& in, tetgenio& addin, TetGenRequest& request);
