@@ -21,6 +21,12 @@
 //    request: 843 / 844 MB. The memory the rank and its TetGen process take
 //    together is not smaller: 1322 / 1246 MB at that peak, about 40 MB more
 //    than with the fork, whose shared pages counted once.
+//  * A fork is slow: it copies the page tables of a rank of 300-500 MB, and
+//    the rank then copies every page it writes while the child lives. The
+//    volume meshing stage of whole tetmesh.py runs (alternated, session 36):
+//    CGAL's anchor at K = 64 on 2 ranks 4.8-4.9 s -> 1.8 s, fandisk at
+//    K = 16 3.2-3.3 s -> 2.0 s, CGAL's rotor at K = 64 on 8 ranks (on 2
+//    cores) 6.6-7.0 s -> 2.6-2.8 s; the same meshes.
 //
 // Contract.
 //  * startTetGenProcess starts `ptm-tetgen` (tetgenWorkerPath) with one
