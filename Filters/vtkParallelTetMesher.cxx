@@ -731,6 +731,11 @@ std::string meshOwnedSubdomains(vtkParallelTetMesher* filter, const ptm::Complex
   const ptm::TetMeshingOptions& options, const ptm::SurfaceRefinementOptions* refinement,
   const ptm::SizeField& field, OwnedSubdomains& owned)
 {
+  const std::string forked = owned.ids.empty() ? "" : ptm::tetgenForkReason();
+  if (!forked.empty())
+  {
+    vtkWarningWithObjectMacro(filter, << forked);
+  }
   for (std::size_t k = 0; k < owned.ids.size(); ++k)
   {
     const std::string where = "subdomain " + std::to_string(owned.ids[k]) + ": ";

@@ -446,11 +446,19 @@ TEST(TetGenProcess, TheWorkerIsFoundAndMeshesAsAForkDoes)
   expectSameMeshForkedAndSpawned(ear, repair, "-i in the sliver repair");
 }
 
-// A worker named but missing is no worker: the caller forks, and meshes.
+// A worker named but missing is no worker: the caller forks, and meshes,
+// and the filter has a reason to warn with; a fork asked for has none.
 TEST(TetGenProcess, AMissingWorkerFallsBackToAFork)
 {
+  EXPECT_EQ(tetgenForkReason(), "");
+  {
+    const WorkerChoice asked("");
+    EXPECT_EQ(tetgenForkReason(), "");
+  }
   const WorkerChoice missing("/nonexistent/ptm-tetgen");
   EXPECT_TRUE(tetgenWorkerPath().empty());
+  EXPECT_NE(tetgenForkReason().find("PTM_TETGEN_WORKER names '/nonexistent/ptm-tetgen'"), std::string::npos)
+    << tetgenForkReason();
   const TriangleSurface ball = icosphere({ 0, 0, 0 }, 1.0, 2);
   expectConformingMesh(ball, meshClosedSurface(ball, {}), "forked");
 }

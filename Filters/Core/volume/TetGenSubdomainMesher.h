@@ -163,11 +163,17 @@ struct TetMeshingResult
 
 TetMeshingResult meshClosedSurface(const TriangleSurface& surface, const TetMeshingOptions& options);
 
+// Why TetGen will run in forks of this process rather than in ptm-tetgen
+// (TetGenProcess.h), for a warning: the program is not where it is looked
+// for, or $PTM_TETGEN_WORKER names no program. Empty if it will run in
+// ptm-tetgen, or if PTM_TETGEN_WORKER is set empty (a fork asked for).
+std::string tetgenForkReason();
+
 // The size of a mesh before it is made, to refuse a request that cannot fit
 // in memory instead of being killed half-way. With a volume bound TetGen's
 // quality mesh has about 2 x volume / maximumVolume tetrahedra (measured:
 // ball 2.0, bracket 2.3); a rank running the pipeline in pvbatch peaks at
-// about 190 bytes per tetrahedron (TetGen's child process plus the VTK
+// about 190 bytes per tetrahedron (TetGen's process plus the VTK
 // output: 3.9 GB per rank for 41.6 M tetrahedra on 2 ranks), so the
 // estimate counts 220.
 struct TetMeshEstimate
