@@ -519,9 +519,10 @@ void addPoints(const OwnedSubdomains& owned, const ptm::ComplexPiece& piece, con
 
 // The tetrahedra, their global ids, subdomains and rank. Each subdomain's
 // own list is released as soon as its corners are copied, before the cell
-// arrays are made: the rank's peak memory is at this step, and the list
-// (32 bytes a tetrahedron) and all five arrays (56) together were 80 MB of
-// rank 0's 907 MB peak on the 9.8 M ball at K = 2 (session 36).
+// data arrays are made: the rank's own peak is at this step, and the list
+// (32 bytes a tetrahedron) had lived beside all five arrays (56 bytes). On
+// the 9.8 M ball at K = 2 rank 0's sampled peak went from 868 to 752 MB
+// (session 36).
 void addTetrahedra(OwnedSubdomains& owned, const MeshTotals& totals, int rank, const LocalPoints& l,
   vtkUnstructuredGrid* output)
 {
