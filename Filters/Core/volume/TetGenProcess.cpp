@@ -223,7 +223,6 @@ bool spawnWorker(const std::string& worker, const TetGenRequest& request, TetGen
     return false;
   }
   process.fd = sockets[0];
-  process.spawned = true;
   // if the worker ends early the sending fails; the caller then finds no
   // result and reports the worker's wait status
   writeTetGenRequest(process.fd, request);
@@ -253,7 +252,6 @@ bool forkChild(const TetGenRequest& request, TetGenProcess& process, std::string
   }
   ::close(fds[1]);
   process.fd = fds[0];
-  process.spawned = false;
   return true;
 }
 /// @}

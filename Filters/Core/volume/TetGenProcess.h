@@ -65,8 +65,7 @@ struct TetGenRequest
 struct TetGenProcess
 {
   pid_t pid = -1;
-  int fd = -1;          // its result arrives here
-  bool spawned = false; // ptm-tetgen (true) or a fork of the caller
+  int fd = -1; // its result arrives here
 };
 
 // The worker program to run: $PTM_TETGEN_WORKER if set (empty: always fork),
