@@ -13,6 +13,7 @@
 #include "SubdomainSurface.h"
 #include "SurfaceComplexArrays.h"
 #include "SurfaceRefinement.h"
+#include "TetGenProcess.h"
 #include "TetGenSubdomainMesher.h"
 #include "TetrahedronQuality.h"
 

@@ -273,6 +273,23 @@ std::string tetgenWorkerPath()
   return "";
 }
 
+std::string tetgenForkReason()
+{
+  if (!tetgenWorkerPath().empty())
+  {
+    return "";
+  }
+  const char* chosen = std::getenv("PTM_TETGEN_WORKER");
+  if (chosen && !*chosen)
+  {
+    return "";
+  }
+  const std::string where = chosen ? "PTM_TETGEN_WORKER names '" + std::string(chosen) + "', which is not an executable program"
+                                   : "ptm-tetgen is not beside the plugin (" + folderOfThisLibrary() + ") nor where the build made it";
+  return where + ": TetGen runs in forks of this rank, slower with many subdomains (1.2-1.6x on the corpus at K = 16-64) "
+                 "and unsafe with InfiniBand; put ptm-tetgen beside the plugin or name it in PTM_TETGEN_WORKER";
+}
+
 bool startTetGenProcess(const TetGenRequest& request, TetGenProcess& process, std::string& error)
 {
   process = TetGenProcess{};

@@ -43,11 +43,11 @@
 //    then ends. The caller reads, reaps the process and closes the
 //    descriptor. The same request gives the same mesh bit for bit in either
 //    kind of process (TetGenProcess tests in TetGenSubdomainMesherTest.cpp).
-#include <tetgen.h>
-
 #include <cstdio>
 #include <string>
 #include <sys/types.h>
+
+class tetgenio; // tetgen.h: only pointers here, so the filters include this header without libtet's
 
 namespace ptm
 {
@@ -72,6 +72,12 @@ struct TetGenProcess
 // else `ptm-tetgen` beside the library this code is in (the plugin), else
 // where the build made it; empty if none of these is an executable file.
 std::string tetgenWorkerPath();
+
+// Why TetGen will run in forks of this process rather than in ptm-tetgen,
+// for a warning: the program is not where it is looked for, or
+// $PTM_TETGEN_WORKER names no program. Empty if it will run in ptm-tetgen,
+// or if PTM_TETGEN_WORKER is set empty (a fork asked for).
+std::string tetgenForkReason();
 
 // Starts the process and hands it the request. False, with `error`, if no
 // process could be started or the request carries fields the worker does

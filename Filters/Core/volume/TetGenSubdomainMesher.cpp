@@ -3,7 +3,6 @@
 #include "BoundarySliverRepair.h"
 #include "Fnv1a.h"
 #include "SelfIntersectionCheck.h"
-#include "LibraryFolder.h"
 #include "TetGenProcess.h"
 #include "TetGenStream.h"
 #include "TetrahedronQuality.h"
@@ -232,27 +231,6 @@ double reapChild(pid_t pid, int& waitStatus)
   return seconds(usage.ru_utime) + seconds(usage.ru_stime);
 }
 
-} // namespace
-
-std::string tetgenForkReason()
-{
-  if (!tetgenWorkerPath().empty())
-  {
-    return "";
-  }
-  const char* chosen = std::getenv("PTM_TETGEN_WORKER");
-  if (chosen && !*chosen)
-  {
-    return "";
-  }
-  const std::string where = chosen ? "PTM_TETGEN_WORKER names '" + std::string(chosen) + "', which is not an executable program"
-                                   : "ptm-tetgen is not beside the plugin (" + folderOfThisLibrary() + ") nor where the build made it";
-  return where + ": TetGen runs in forks of this rank, slower with many subdomains (1.2-1.6x on the corpus at K = 16-64) "
-                 "and unsafe with InfiniBand; put ptm-tetgen beside the plugin or name it in PTM_TETGEN_WORKER";
-}
-
-namespace
-{
 // Runs TetGen in a child process: libtet 1.5 frees its memory in
 // terminatetetgen() and again in the destructor while the int it throws
 // unwinds, so every TetGen failure would otherwise crash the whole

@@ -163,12 +163,6 @@ struct TetMeshingResult
 
 TetMeshingResult meshClosedSurface(const TriangleSurface& surface, const TetMeshingOptions& options);
 
-// Why TetGen will run in forks of this process rather than in ptm-tetgen
-// (TetGenProcess.h), for a warning: the program is not where it is looked
-// for, or $PTM_TETGEN_WORKER names no program. Empty if it will run in
-// ptm-tetgen, or if PTM_TETGEN_WORKER is set empty (a fork asked for).
-std::string tetgenForkReason();
-
 // The size of a mesh before it is made, to refuse a request that cannot fit
 // in memory instead of being killed half-way. With a volume bound TetGen's
 // quality mesh has about 2 x volume / maximumVolume tetrahedra (measured:

@@ -7,6 +7,8 @@
 // the mesher only; by hand it has nothing to read.
 #include "TetGenProcess.h"
 
+#include <tetgen.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <string>
