@@ -65,6 +65,8 @@ void addRelaxationFields(vtkFieldData* fd, const ptm::RelaxationResult& result, 
   addValue("MovedNodeCount", static_cast<double>(result.acceptedMoves));
   // nodes put back because their moves made a subdomain cross itself
   addValue("UndoneMoveCount", static_cast<double>(result.undoneMoves));
+  // straight-contour points moved to the inside by rounding (StraightContourPoints.h)
+  addValue("ContourPointsPulledInside", static_cast<double>(result.contourPointsPulledInside));
   // what the relaxation did to the geometry (~1e-15 in KeepSurface mode)
   addValue("RelaxationMode", static_cast<double>(mode));
   addValue("VolumeChange", result.change.volumeChange);

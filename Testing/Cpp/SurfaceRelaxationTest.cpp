@@ -407,7 +407,9 @@ TEST_P(KeepSurfaceRelaxation, KeepsEverySubdomainExactly)
     // rise a little on one case (torus K=7 recursive bisection: 1.42% ->
     // 1.44%, a triangle of 11 degrees next to a worse one going under 10),
     // so it is asserted over all surfaces below
-    EXPECT_GE(r.after.minimumAngleDegrees, r.before.minimumAngleDegrees) << label.str();
+    // (up to rounding: the last step moves straight-contour points by a few
+    // units in the last place, StraightContourPoints.h)
+    EXPECT_GE(r.after.minimumAngleDegrees, r.before.minimumAngleDegrees - 1e-9) << label.str();
     thinBefore += r.before.shareBelow10Degrees * r.before.triangles;
     thinAfter += r.after.shareBelow10Degrees * r.after.triangles;
     std::cout << "[ figure ] KeepSurface " << label.str() << ": " << moved << " nodes moved (" << r.freeNodes
@@ -429,7 +431,7 @@ TEST_P(KeepSurfaceRelaxation, KeepsEverySubdomainExactly)
     ASSERT_TRUE(m.ok) << label.str() << ": " << m.error;
     EXPECT_LE(m.change.deviationOutputToInput, smoothOptions().maximumSurfaceDeviation) << label.str();
     EXPECT_LE(m.change.deviationInputToOutput, smoothOptions().maximumSurfaceDeviation) << label.str();
-    EXPECT_GE(m.after.minimumAngleDegrees, m.before.minimumAngleDegrees) << label.str();
+    EXPECT_GE(m.after.minimumAngleDegrees, m.before.minimumAngleDegrees - 1e-9) << label.str(); // as above
     smoothThinAfter += m.after.shareBelow10Degrees * m.after.triangles;
     std::cout << "[ figure ] SmoothSurface " << label.str() << ": under 10 degrees "
               << 100 * m.before.shareBelow10Degrees << "% -> " << 100 * m.after.shareBelow10Degrees

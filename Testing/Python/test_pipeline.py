@@ -117,14 +117,18 @@ def check_relaxation(table, tris, pairs, volumes, rtable, rvolumes, fd, mode):
     point on the plane of each of its triangles before relaxation (1e-12 of
     the bounding-box diagonal), reported changes ~0. SmoothSurface: the
     reported volume change is the one measured here, the deviation within the
-    bound. Both: the smallest angle never gets worse."""
+    bound. Both: the smallest angle never gets worse, but by rounding (the
+    relaxer's last step moves straight-contour points by a few units in the
+    last place, StraightContourPoints.h; a triangle at such a point that was
+    the smallest before can lose a rounding's worth of its angle)."""
     def value(array):
         return float(vtk_to_numpy(fd.GetArray(array))[0])
     diagonal = float(np.linalg.norm(table.max(axis=0) - table.min(axis=0)))
     surface = tris[pairs[:, 1] == -1]
     change = enclosed_volume(rtable, surface) / enclosed_volume(table, surface) - 1
     assert abs(change - value("VolumeChange")) <= 1e-12 + 1e-6 * abs(change), (change, value("VolumeChange"))
-    assert value("MinimumAngleAfter") >= value("MinimumAngleBefore")
+    assert value("MinimumAngleAfter") >= value("MinimumAngleBefore") - 1e-9, (
+        value("MinimumAngleBefore"), value("MinimumAngleAfter"))
     if mode == "SmoothSurface":
         assert value("SurfaceDeviationOutputToInput") <= SMOOTH_DEVIATION
         assert value("SurfaceDeviationInputToOutput") <= SMOOTH_DEVIATION

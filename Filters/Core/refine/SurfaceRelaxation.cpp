@@ -1,6 +1,7 @@
 #include "SurfaceRelaxation.h"
 
 #include "SelfIntersectionCheck.h"
+#include "StraightContourPoints.h"
 #include "SubdomainSurface.h"
 
 #include <CGAL/AABB_traits.h>
@@ -1088,6 +1089,7 @@ RelaxationResult relaxSurfaceComplex(SurfaceComplex& c, const RelaxationOptions&
   {
     return result;
   }
+  result.contourPointsPulledInside = keepStraightContourPointsInside(c);
   result.after = triangleQuality(c);
   result.change = surfaceChange(before, c);
   result.ok = true;

@@ -45,6 +45,12 @@
 // steps); a node whose worst angle stays under 20 degrees then tries short
 // moves towards each neighbour. Nodes are visited in order of index, so the
 // same complex gives the same result anywhere.
+//
+// Last, in both modes and whatever the iterations, the points in the middle
+// of a straight contour that rounding left outside the input surface are
+// moved inside it by a few units in the last place
+// (StraightContourPoints.h; at most 1e-13 of their coordinates, the one
+// departure from KeepSurface's point set), where TetGen made needles.
 #include "SurfaceComplex.h"
 
 #include <functional>
@@ -114,6 +120,9 @@ struct RelaxationResult
   std::size_t rejectedMoves = 0;
   std::size_t movesBeyondDeviation = 0; // SmoothSurface: trial positions refused by maximumSurfaceDeviation
   std::size_t undoneMoves = 0; // nodes put back because their moves made a subdomain cross itself
+  // points of straight contours moved a few units in the last place to the
+  // inner side of the input surface, last (StraightContourPoints.h)
+  std::size_t contourPointsPulledInside = 0;
 };
 
 TriangleQualityFigures triangleQuality(const SurfaceComplex& complex);
