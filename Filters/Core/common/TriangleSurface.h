@@ -28,6 +28,35 @@ inline Triangle sortedCorners(Triangle t)
   return t;
 }
 
+// An edge of a triangle (edgesOfTriangles).
+struct EdgeOfTriangle
+{
+  UndirectedEdge edge;
+  Index triangle;
+  bool operator<(const EdgeOfTriangle& o) const
+  {
+    return edge != o.edge ? edge < o.edge : triangle < o.triangle;
+  }
+};
+
+// Every edge of every triangle with its triangle, sorted by edge, then
+// triangle: the triangles at an edge are one run.
+inline std::vector<EdgeOfTriangle> edgesOfTriangles(const std::vector<Triangle>& triangles)
+{
+  std::vector<EdgeOfTriangle> edges;
+  edges.reserve(3 * triangles.size());
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+  {
+    const Triangle& t = triangles[i];
+    for (int k = 0; k < 3; ++k)
+    {
+      edges.push_back({ undirected(t[k], t[(k + 1) % 3]), static_cast<Index>(i) });
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  return edges;
+}
+
 struct TriangleSurface
 {
   std::vector<Vec3> points;

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <tuple>
 #include <vector>
 
 namespace ptm
@@ -28,37 +27,10 @@ Kernel::Point_3 exact(const Vec3& p)
   return { p[0], p[1], p[2] };
 }
 
-/// @name The triangles at every edge
-/// @{
-struct EdgeUse
-{
-  UndirectedEdge edge;
-  Index triangle;
-  bool operator<(const EdgeUse& o) const { return std::tie(edge, triangle) < std::tie(o.edge, o.triangle); }
-};
-
-// Every (edge, triangle) of the complex, sorted by edge.
-std::vector<EdgeUse> edgeUses(const SurfaceComplex& c)
-{
-  std::vector<EdgeUse> uses;
-  uses.reserve(3 * c.triangles.size());
-  for (std::size_t i = 0; i < c.triangles.size(); ++i)
-  {
-    const Triangle& t = c.triangles[i];
-    for (int k = 0; k < 3; ++k)
-    {
-      uses.push_back({ undirected(t[k], t[(k + 1) % 3]), static_cast<Index>(i) });
-    }
-  }
-  std::sort(uses.begin(), uses.end());
-  return uses;
-}
-
 bool isSurface(const SurfaceComplex& c, Index t)
 {
   return c.trianglePairs[t][1] == -1;
 }
-/// @}
 
 // Whether p lies on the segment a-b up to rounding, strictly between them.
 bool onSegment(const Vec3& p, const Vec3& a, const Vec3& b)
@@ -92,7 +64,7 @@ struct ContourPoint
 // and its surface triangles on those edges.
 std::vector<ContourPoint> contourPoints(const SurfaceComplex& c)
 {
-  const std::vector<EdgeUse> uses = edgeUses(c);
+  const std::vector<EdgeOfTriangle> uses = edgesOfTriangles(c.triangles);
   std::vector<std::vector<Index>> neighbours(c.points.size());
   std::vector<std::vector<Index>> triangles(c.points.size());
   std::vector<int> plane(c.points.size(), -1);

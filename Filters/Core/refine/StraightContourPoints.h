@@ -40,9 +40,10 @@
 // normal of those surface triangles (along minus that normal where the
 // complex names no plane), by 2^k units in the last place of its largest
 // coordinate, k = 0, 1, ..., until no test has it outside, but never by
-// more than 1e-13 of that coordinate (then it stays). Everything else is unchanged;
-// the same complex gives the same points anywhere, so every rank holding the
-// whole complex moves the same points alike. Returns how many points moved.
+// more than 1e-13 of that coordinate (then it stays). Everything else is
+// unchanged; the same complex gives the same points anywhere, so every rank
+// holding the whole complex moves the same points alike. Returns how many
+// points moved.
 #include "SurfaceComplex.h"
 
 #include <cstddef>
