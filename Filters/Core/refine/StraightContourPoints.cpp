@@ -3,6 +3,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -59,6 +60,52 @@ struct ContourPoint
   int plane = -1; // the cutting plane of an interface triangle on its contour edges (-1: none known)
 };
 
+// For every straight point (`straight`, two entries in `neighbours`), the
+// ends of its straight chain beyond neighbours[v][0] and beyond
+// neighbours[v][1] (-1 for other points). Each chain is walked once: a
+// long straight contour split into many parts costs its length, not its
+// square.
+std::vector<std::array<Index, 2>> chainEnds(
+  const std::vector<std::vector<Index>>& neighbours, const std::vector<char>& straight)
+{
+  const std::size_t n = neighbours.size();
+  std::vector<std::array<Index, 2>> ends(n, { -1, -1 });
+  auto other = [&](Index v, Index from) { return neighbours[v][0] == from ? neighbours[v][1] : neighbours[v][0]; };
+  for (std::size_t start = 0; start < n; ++start)
+  {
+    if (!straight[start] || ends[start][0] >= 0)
+    {
+      continue;
+    }
+    // to one end, then back along the whole chain to the other
+    Index from = static_cast<Index>(start), next = neighbours[start][0];
+    for (std::size_t steps = 0; straight[next] && steps < n; ++steps)
+    {
+      const Index after = other(next, from);
+      from = next;
+      next = after;
+    }
+    const Index first = next;
+    std::vector<Index> chain;
+    Index previous = first, current = from;
+    for (std::size_t steps = 0; straight[current] && steps < n; ++steps)
+    {
+      chain.push_back(current);
+      const Index after = other(current, previous);
+      previous = current;
+      current = after;
+    }
+    const Index last = current;
+    for (std::size_t k = 0; k < chain.size(); ++k)
+    {
+      const Index towardsFirst = k == 0 ? first : chain[k - 1];
+      const bool firstBeyond0 = neighbours[chain[k]][0] == towardsFirst;
+      ends[chain[k]] = firstBeyond0 ? std::array<Index, 2>{ first, last } : std::array<Index, 2>{ last, first };
+    }
+  }
+  return ends;
+}
+
 // The points with exactly two contour edges lying on the segment between
 // their other ends (onSegment), in index order, each with its chain's ends
 // and its surface triangles on those edges.
@@ -102,28 +149,20 @@ std::vector<ContourPoint> contourPoints(const SurfaceComplex& c)
     }
     i = j;
   }
-  auto straight = [&](Index v) {
+  std::vector<char> straight(c.points.size(), 0);
+  for (std::size_t v = 0; v < neighbours.size(); ++v)
+  {
     const auto& n = neighbours[v];
-    return n.size() == 2 && onSegment(c.points[v], c.points[n[0]], c.points[n[1]]);
-  };
-  // the last point from `from` through `next` on while the points are straight
-  auto chainEnd = [&](Index from, Index next) {
-    for (std::size_t steps = 0; straight(next) && steps < neighbours.size(); ++steps)
-    {
-      const Index after = neighbours[next][0] == from ? neighbours[next][1] : neighbours[next][0];
-      from = next;
-      next = after;
-    }
-    return next;
-  };
+    straight[v] = n.size() == 2 && onSegment(c.points[v], c.points[n[0]], c.points[n[1]]);
+  }
+  const std::vector<std::array<Index, 2>> ends = chainEnds(neighbours, straight);
   std::vector<ContourPoint> points;
   for (std::size_t v = 0; v < neighbours.size(); ++v)
   {
-    const Index i = static_cast<Index>(v);
-    if (straight(i))
+    if (straight[v])
     {
-      const Index a = neighbours[v][0], b = neighbours[v][1];
-      points.push_back({ i, a, b, chainEnd(i, a), chainEnd(i, b), std::move(triangles[v]), plane[v] });
+      const Index i = static_cast<Index>(v), a = neighbours[v][0], b = neighbours[v][1];
+      points.push_back({ i, a, b, ends[v][0], ends[v][1], std::move(triangles[v]), plane[v] });
     }
   }
   return points;
@@ -167,15 +206,9 @@ Vec3 outwardNormal(const SurfaceComplex& c, const ContourPoint& p)
   for (Index t : p.surfaceTriangles)
   {
     const Triangle& k = c.triangles[t];
-    const Vec3 n = cross(c.points[k[1]] - c.points[k[0]], c.points[k[2]] - c.points[k[0]]);
-    const double length = norm(n);
-    if (length > 0)
-    {
-      sum = sum + (1.0 / length) * n;
-    }
+    sum = sum + normalized(cross(c.points[k[1]] - c.points[k[0]], c.points[k[2]] - c.points[k[0]]));
   }
-  const double length = norm(sum);
-  return length > 0 ? (1.0 / length) * sum : Vec3{ 0, 0, 0 };
+  return normalized(sum);
 }
 
 // The direction p.v moves in: across its contour, in the cutting plane,
