@@ -596,6 +596,26 @@ TEST(TetGenSubdomainMesher, FlatTetrahedraOnTheSurfaceAreRepairedInCavities)
   EXPECT_EQ(repaired.mesh.tets, again.mesh.tets);
 }
 
+TEST(TetGenSubdomainMesher, APartWithoutSliversIsTakenWithMoreTetrahedraUnder10Degrees)
+{
+  // KiCad's WEMOS D1 mini cut by 24 parallel planes, subdomain 13 as it
+  // reached TetGen (session 38). Its worst tetrahedron, 0.78 degrees, is
+  // the repair's, but the part meshed again has more tetrahedra under 10
+  // degrees: until session 38 the part was refused (0.78 degrees, no point
+  // kept). Now a part none of whose tetrahedra is under the repair angle is
+  // taken: 3.37 degrees, one point
+  const TriangleSurface surface = regressionSurface("tetgen_part_taken_without_slivers.off");
+  TetMeshingOptions options = boundedOptions(0.074752136211559073);
+  options.sliverRepairAngle = 5;
+  const TetMeshingResult repaired = meshClosedSurface(surface, options);
+  expectConformingMesh(surface, repaired, "with the repair");
+  const DihedralQuality after = dihedralQuality(repaired.mesh);
+  std::cout << "smallest dihedral angle: " << after.minimumDihedralDegrees << " degrees, "
+            << repaired.sliverRepairPoints << " repair points\n";
+  EXPECT_GT(after.minimumDihedralDegrees, 3.0);
+  EXPECT_GT(repaired.sliverRepairPoints, 0);
+}
+
 TEST(TetGenSubdomainMesher, SliverPointsLieInsideAboveTheirTetrahedron)
 {
   // an ear: two surface triangles of a square folded by 2 degrees, closed
@@ -614,6 +634,12 @@ TEST(TetGenSubdomainMesher, SliverPointsLieInsideAboveTheirTetrahedron)
   mesh.points[3] = { 0.99, -0.01, std::sin(fold) * 0.01 }; // 0.014 from point 1
   ASSERT_LT(smallestDihedralDegrees(mesh.points[0], mesh.points[1], mesh.points[2], mesh.points[3]), 5.0);
   EXPECT_TRUE(boundarySliverPoints(s, mesh, 5.0).empty());
+  // ... until the third round, which puts it where the first would: above
+  const std::vector<BoundarySliverPoint> tiny = boundarySliverPoints(s, mesh, 5.0, SliverKind::WithATinyEdge);
+  ASSERT_EQ(tiny.size(), 1u);
+  EXPECT_EQ(tiny[0].tetrahedron, 0);
+  EXPECT_GT(tiny[0].point[2], 0.1);
+  EXPECT_TRUE(boundarySliverPoints(s, oneTetrahedronOn(s), 5.0, SliverKind::WithATinyEdge).empty());
 }
 
 TEST(TetGenSubdomainMesher, SliversHeldBySurfaceCornersGetAPointAtTheirCentroid)
@@ -647,10 +673,17 @@ TEST(TetGenSubdomainMesher, SliversHeldBySurfaceCornersGetAPointAtTheirCentroid)
   inner.points.push_back(mesh.points[mesh.tets[0][0]]);
   inner.tets[0][0] = static_cast<Index>(inner.points.size() - 1);
   EXPECT_TRUE(boundarySliverPoints(s, inner, 5.0, SliverKind::HeldByCorners).empty());
-  // two corners almost together leave no room for a point between them
+  // two corners almost together leave no room for a point between them,
+  // and the second round passes it by; the third puts one at its centroid
   mesh.points[2] = { 0.05, 0.005, 0.0001 };
   ASSERT_LT(smallestDihedralDegrees(mesh.points[0], mesh.points[1], mesh.points[2], mesh.points[3]), 5.0);
   EXPECT_TRUE(boundarySliverPoints(s, mesh, 5.0, SliverKind::HeldByCorners).empty());
+  const std::vector<BoundarySliverPoint> tiny = boundarySliverPoints(s, mesh, 5.0, SliverKind::WithATinyEdge);
+  ASSERT_EQ(tiny.size(), 1u);
+  const auto& t = mesh.tets[0];
+  const Vec3 centroid =
+    0.25 * (mesh.points[t[0]] + mesh.points[t[1]] + mesh.points[t[2]] + mesh.points[t[3]]);
+  EXPECT_LT(norm(tiny[0].point - centroid), 1e-12);
 }
 
 TEST(TetGenSubdomainMesher, ASplitSharedTriangleIsMeshedAgainInTheNextOrders)
