@@ -57,6 +57,21 @@ inline std::vector<EdgeOfTriangle> edgesOfTriangles(const std::vector<Triangle>&
   return edges;
 }
 
+// The triangles at each of `pointCount` points, in increasing order.
+inline std::vector<std::vector<std::size_t>> trianglesAtPoints(
+  const std::vector<Triangle>& triangles, std::size_t pointCount)
+{
+  std::vector<std::vector<std::size_t>> at(pointCount);
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    for (Index p : triangles[t])
+    {
+      at[p].push_back(t);
+    }
+  }
+  return at;
+}
+
 struct TriangleSurface
 {
   std::vector<Vec3> points;

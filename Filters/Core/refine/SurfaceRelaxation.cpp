@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <map>
 #include <set>
 
@@ -84,40 +85,89 @@ double outerSurfaceVolume(const SurfaceComplex& c)
 // triangle none of whose points moved lies in both, so only moved points
 // and the centroids of triangles with a moved point are sampled (sampling
 // all took 6.7 % of a K = 64 run on one rank, ball of 23,592 triangles).
-// Each query starts from the nearest point of the sample's own triangle in
-// `to`, which is at most a move away, instead of CGAL's search tree of
-// hints: queries and that tree took 0.3 s of 0.5 on the 10 M ball at K = 2.
+// Each query starts from the nearest point of the triangles at the corners
+// of the sample's own triangle in `to`, which are at most a move away,
+// instead of CGAL's search tree of hints: queries and that tree took 0.3 s
+// of 0.5 on the 10 M ball at K = 2. A sample no farther from that point
+// than the largest distance so far, or within kOnSurfaceFraction of the
+// surface, is not queried at all: with the exact relaxer every sample lies
+// on the surface up to round-off, nearly always on one of those
+// triangles, and the tree's query of a point on the surface
+// falls back to exact arithmetic at every box it touches (session 38: KiCad's
+// XSON-16 at 64 parallel planes, relaxation 14.9 s on one rank, 43 % of the
+// run's samples in those queries; 8.7 s with the sample's own triangle
+// alone as the hint).
+// A sample this close to a triangle (a fraction of the bounding box's
+// diagonal) is on the surface: the figure issue #18 asks every output
+// boundary point to meet.
+constexpr double kOnSurfaceFraction = 1e-12;
+
 double sampledDistance(const SurfaceComplex& from, const SurfaceComplex& to)
 {
   using CgalTriangle = Kernel::Triangle_3;
   using Primitive = CGAL::AABB_triangle_primitive<Kernel, std::vector<CgalTriangle>::const_iterator>;
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
-  std::vector<CgalTriangle> triangles;
-  for (const Triangle& t : to.triangles)
-  {
-    triangles.emplace_back(toCgal(to.points[t[0]]), toCgal(to.points[t[1]]), toCgal(to.points[t[2]]));
-  }
-  if (triangles.empty())
+  if (to.triangles.empty())
   {
     return 0;
   }
   const bool sameTriangles = from.triangles == to.triangles && from.points.size() == to.points.size();
   auto moved = [&](Index v) { return !sameTriangles || from.points[v] != to.points[v]; };
-  Tree tree(triangles.begin(), triangles.end());
-  if (!sameTriangles)
-  {
-    tree.accelerate_distance_queries();
-  }
+  // built at the first sample the hints do not settle: most runs of the
+  // exact relaxer need none
+  std::vector<CgalTriangle> triangles;
+  std::unique_ptr<Tree> tree;
+  auto searchTree = [&]() -> Tree& {
+    if (!tree)
+    {
+      for (const Triangle& t : to.triangles)
+      {
+        triangles.emplace_back(toCgal(to.points[t[0]]), toCgal(to.points[t[1]]), toCgal(to.points[t[2]]));
+      }
+      tree = std::make_unique<Tree>(triangles.begin(), triangles.end());
+      if (!sameTriangles)
+      {
+        tree->accelerate_distance_queries();
+      }
+    }
+    return *tree;
+  };
+  const std::vector<std::vector<std::size_t>> around =
+    sameTriangles ? trianglesAtPoints(to.triangles, to.points.size()) : std::vector<std::vector<std::size_t>>{};
+  const double roundOff = kOnSurfaceFraction * boundingBoxDiagonal(to.points);
+  const double onSurface = roundOff * roundOff;
   double worst = 0;
   auto sample = [&](const Vec3& p, std::size_t own) {
     if (!sameTriangles)
     {
-      worst = std::max(worst, tree.squared_distance(toCgal(p)));
+      worst = std::max(worst, searchTree().squared_distance(toCgal(p)));
       return;
     }
-    const Triangle& t = to.triangles[own];
-    const Vec3 hint = closestPointOnTriangle(p, to.points[t[0]], to.points[t[1]], to.points[t[2]]);
-    worst = std::max(worst, tree.squared_distance(toCgal(p), toCgal(hint)));
+    Vec3 hint = p;
+    double nearest = std::numeric_limits<double>::max();
+    for (Index corner : to.triangles[own])
+    {
+      for (std::size_t k : around[corner])
+      {
+        const Triangle& t = to.triangles[k];
+        const Vec3 q = closestPointOnTriangle(p, to.points[t[0]], to.points[t[1]], to.points[t[2]]);
+        const Vec3 d = p - q;
+        if (dot(d, d) < nearest)
+        {
+          nearest = dot(d, d);
+          hint = q;
+        }
+      }
+    }
+    if (nearest <= std::max(worst, onSurface))
+    {
+      // the surface is no farther than the hint: it cannot raise the largest
+      // distance, or the sample is on the surface up to round-off, and the
+      // hint's distance bounds its own
+      worst = std::max(worst, nearest);
+      return;
+    }
+    worst = std::max(worst, searchTree().squared_distance(toCgal(p), toCgal(hint)));
   };
   std::vector<char> used(from.points.size(), 0);
   for (std::size_t i = 0; i < from.triangles.size(); ++i)
@@ -210,7 +260,7 @@ private:
 void Relaxer::buildAdjacency()
 {
   const std::size_t n = c.points.size(), nt = c.triangles.size();
-  trianglesOf.assign(n, {});
+  trianglesOf = trianglesAtPoints(c.triangles, n);
   neighbours.assign(n, {});
   normals.resize(nt);
   for (std::size_t t = 0; t < nt; ++t)
@@ -218,7 +268,6 @@ void Relaxer::buildAdjacency()
     const Triangle& tri = c.triangles[t];
     for (int k = 0; k < 3; ++k)
     {
-      trianglesOf[tri[k]].push_back(t);
       neighbours[tri[k]].push_back(tri[(k + 1) % 3]);
       neighbours[tri[k]].push_back(tri[(k + 2) % 3]);
     }
