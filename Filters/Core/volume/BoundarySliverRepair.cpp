@@ -593,9 +593,10 @@ std::vector<int> tetrahedronParts(const Remeshed& run, const std::vector<int>& p
 // repair angle, and returns how many sliver points those parts have. (The
 // second way in, session 38: the graded ball of the size-field tests at
 // K = 16 had a part go from 1.67 to 5.54 degrees with 7 tetrahedra under 10
-// instead of 5, which the first alone refused; its run rose 1.67 -> 2.02.) (Tried and dropped: the parts not kept
-// tried again with their points at 0.6 of the lift. It helped one part of
-// CGAL's eight at K = 16, not its worst, for a third more repair time.)
+// instead of 5, which the first alone refused; its run rose 1.67 -> 2.02.
+// Tried and dropped: the parts not kept tried again with their points at
+// 0.6 of the lift. It helped one part of CGAL's eight at K = 16, not its
+// worst, for a third more repair time.)
 int remeshParts(const TriangleSurface& surface, const TetMeshingOptions& options, const TetMesh& mesh,
   const std::vector<BoundarySliverPoint>& points, const std::vector<CavityPart>& parts, Remeshed& run)
 {
