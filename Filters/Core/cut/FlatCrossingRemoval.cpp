@@ -53,7 +53,7 @@ Collapser::Collapser(SurfaceComplex& complex, double tol, const std::vector<Inde
   : c(complex)
   , tolerance(tol)
   , faceGroups(groups)
-  , star(complex.points.size())
+  , star(trianglesAtPoints(complex.triangles, complex.points.size()))
   , alive(complex.triangles.size(), 1)
   , prevOf(complex.points.size(), -1)
   , nextOf(complex.points.size(), -1)
@@ -61,13 +61,6 @@ Collapser::Collapser(SurfaceComplex& complex, double tol, const std::vector<Inde
   , regionOf(complex.points.size(), -1)
   , removed(complex.points.size(), 0)
 {
-  for (std::size_t t = 0; t < c.triangles.size(); ++t)
-  {
-    for (Index v : c.triangles[t])
-    {
-      star[v].push_back(t);
-    }
-  }
   for (std::size_t r = 0; r < c.interfaces.size(); ++r)
   {
     for (const DirectedEdge& e : c.interfaces[r].edges)
