@@ -4,7 +4,11 @@
 // Testing/Corpus/compare_cuts.sh runs this of both and reports where the
 // cuts differ and how the times compare.
 //
-//   cut_digest SURFACE.off K RecursiveBisection|ParallelPlanes
+//   cut_digest SURFACE.off K RecursiveBisection|ParallelPlanes [H]
+//
+// With H, the cuts balance the tetrahedra predicted for the size H
+// (BalanceCriterion PredictedCost, tetmesh.py's default, without the
+// thickness cap) instead of the volume.
 //
 // Prints one JSON object: ok (or the error), seconds of the decomposition,
 // counts of planes, points, triangles and interface edges, the cutter's
@@ -65,9 +69,9 @@ std::uint64_t digest(const ptm::SurfaceComplex& c, std::size_t& interfaceEdges)
 
 int main(int argc, char** argv)
 {
-  if (argc != 4)
+  if (argc != 4 && argc != 5)
   {
-    std::fprintf(stderr, "usage: cut_digest SURFACE.off K RecursiveBisection|ParallelPlanes\n");
+    std::fprintf(stderr, "usage: cut_digest SURFACE.off K RecursiveBisection|ParallelPlanes [H]\n");
     return 2;
   }
   const ptm::OffReadResult file = ptm::readOffFile(argv[1]);
@@ -81,6 +85,11 @@ int main(int argc, char** argv)
   options.strategy = std::strcmp(argv[3], "ParallelPlanes") == 0 ? ptm::CutStrategy::ParallelPlanes
                                                                    : ptm::CutStrategy::RecursiveBisection;
   options.direction = ptm::CutDirection::Inertia; // as the cutter's default
+  if (argc == 5)
+  {
+    options.criterion = ptm::BalanceCriterion::PredictedCost;
+    options.costMaximumSize = std::atof(argv[4]);
+  }
   const auto start = std::chrono::steady_clock::now();
   const ptm::DecompositionResult r = ptm::decomposeVolumeBalanced(file.data.surface, options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

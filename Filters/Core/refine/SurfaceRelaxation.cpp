@@ -229,7 +229,7 @@ private:
   // SmoothSurface
   std::vector<int> patch;
   std::vector<std::vector<Index>> featureNeighbours;
-  std::map<std::pair<Index, Index>, std::vector<int>> featureKind;
+  std::map<UndirectedEdge, std::vector<int>> featureKind;
   double maximumMove = std::numeric_limits<double>::infinity();
   std::size_t movesBeyondDeviation = 0;
   // KeepSurface
@@ -289,19 +289,18 @@ void Relaxer::buildAdjacency()
 void Relaxer::classifyByFeatures()
 {
   const std::size_t n = c.points.size();
-  std::map<std::pair<Index, Index>, std::vector<std::size_t>> edgeTriangles;
-  for (std::size_t t = 0; t < c.triangles.size(); ++t)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      const Index a = c.triangles[t][k], b = c.triangles[t][(k + 1) % 3];
-      edgeTriangles[{ std::min(a, b), std::max(a, b) }].push_back(t);
-    }
-  }
+  const std::vector<EdgeOfTriangle> edges = edgesOfTriangles(c.triangles);
   const double cosFeature = std::cos(options.featureAngleDegrees * kDegree);
   featureNeighbours.assign(n, {});
-  for (const auto& [edge, ts] : edgeTriangles)
+  std::vector<std::size_t> ts; // the triangles at one edge: a run of `edges`
+  for (std::size_t i = 0; i < edges.size(); ++i)
   {
+    ts.push_back(static_cast<std::size_t>(edges[i].triangle));
+    if (i + 1 < edges.size() && edges[i + 1].edge == edges[i].edge)
+    {
+      continue;
+    }
+    const UndirectedEdge edge = edges[i].edge;
     bool feature = ts.size() != 2;
     for (std::size_t i = 1; i < ts.size() && !feature; ++i)
     {
@@ -317,8 +316,8 @@ void Relaxer::classifyByFeatures()
     }
     if (feature)
     {
-      featureNeighbours[edge.first].push_back(edge.second);
-      featureNeighbours[edge.second].push_back(edge.first);
+      featureNeighbours[edge[0]].push_back(edge[1]);
+      featureNeighbours[edge[1]].push_back(edge[0]);
       // which patches meet along it: a contour {-1, p}, a plane-plane line
       // {p, q}, a sharp surface crease {-1, -1}
       std::vector<int> meeting;
@@ -329,6 +328,7 @@ void Relaxer::classifyByFeatures()
       std::sort(meeting.begin(), meeting.end());
       featureKind[edge] = meeting;
     }
+    ts.clear();
   }
   kind.assign(n, NodeKind::Fixed);
   patch.assign(n, -2);
@@ -351,8 +351,8 @@ void Relaxer::classifyByFeatures()
       // cut the corner, so the node is a corner and stays put
       const Index a = featureNeighbours[v][0], b = featureNeighbours[v][1];
       const Index w = static_cast<Index>(v);
-      const auto& kindA = featureKind[{ std::min(w, a), std::max(w, a) }];
-      const auto& kindB = featureKind[{ std::min(w, b), std::max(w, b) }];
+      const auto& kindA = featureKind[undirected(w, a)];
+      const auto& kindB = featureKind[undirected(w, b)];
       const Vec3 ta = normalized(c.points[a] - c.points[v]), tb = normalized(c.points[b] - c.points[v]);
       if (kindA != kindB || dot(ta, tb) > -cosFeature)
       {
