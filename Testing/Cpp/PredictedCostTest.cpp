@@ -252,6 +252,38 @@ TEST(CostSamples, DecompositionByUniformCostCountsTheInputPieces)
   EXPECT_LT(imbalance[1], 1.05) << "by predicted cost";
 }
 
+// Without a size field the volume term of the cost is exact, not counted on
+// grid nodes: two equal cubes, the second off the grid (by 0.2 and 0.1
+// across), cost the same, so at K = 2 the plane falls in the gap between
+// them. Counted on the grid's columns they weighed 3.5 % apart, and the
+// plane cut a wedge 0.027 thick off the second cube's face (issue #18:
+// such a wedge was meshed at 0.29 degrees).
+TEST(CostSamples, UniformCostWeighsEqualBodiesAlike)
+{
+  const TriangleSurface two =
+    merged(subdividedBox({ 0, 0, 0 }, { 1, 1, 1 }, 1), subdividedBox({ 3, 0.2, 0.1 }, { 4, 1.2, 1.1 }, 1));
+  const CostSamples samples = sampleUniformCost(two, 0.1, 1000000);
+  EXPECT_EQ(samples.points.size(), two.triangles.size()); // the pieces only: no thickness cap, no grid
+  EXPECT_NEAR(samples.perVolume, kUniformCostPerRegularTetrahedron * 6.0 * std::sqrt(2.0) / 1e-3, 1e-9);
+  for (CutStrategy strategy : { CutStrategy::ParallelPlanes, CutStrategy::RecursiveBisection })
+  {
+    DecompositionOptions options;
+    options.numberOfSubdomains = 2;
+    options.strategy = strategy;
+    options.direction = CutDirection::X;
+    options.criterion = BalanceCriterion::PredictedCost;
+    options.costMaximumSize = 0.1;
+    const DecompositionResult r = decomposeVolumeBalanced(two, options);
+    ASSERT_TRUE(r.ok) << r.error;
+    ASSERT_EQ(r.complex.planes.size(), 1u);
+    const double x = r.complex.planes.front().origin[0];
+    EXPECT_GT(x, 1.0) << toString(strategy);
+    EXPECT_LT(x, 3.0) << toString(strategy) << ": the plane cuts the second cube";
+    EXPECT_NEAR(r.subdomainVolume[0], 1.0, 1e-12) << toString(strategy);
+    EXPECT_NEAR(r.subdomainVolume[1], 1.0, 1e-12) << toString(strategy);
+  }
+}
+
 // Sizes from samples: exact at a sample, a weighted mean between samples,
 // and refused (with the value named) when a sample is not a size.
 TEST(SampledSize, InterpolatesBetweenSamplesAndRefusesBadOnes)

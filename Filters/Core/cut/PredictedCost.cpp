@@ -16,6 +16,20 @@ constexpr std::array<double, 4> kNodes{ 0.1834346424956498, 0.5255324099163290, 
 constexpr std::array<double, 4> kWeights{ 0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
   0.1012285362903763 };
 
+// The smallest size the model counts: a thousandth of the bounding box's diagonal.
+double sizeFloor(const std::vector<Vec3>& points)
+{
+  return 1e-3 * boundingBoxDiagonal(points);
+}
+
+// Regular tetrahedra of edge h per unit volume, h floored (and a size that
+// is not positive and finite taken as the floor).
+double densityOfSize(double h, double floor)
+{
+  h = h > 0 && std::isfinite(h) ? std::max(h, floor) : floor;
+  return 6.0 * std::sqrt(2.0) / (h * h * h);
+}
+
 struct Density
 {
   const SizeFunction& size;
@@ -24,11 +38,7 @@ struct Density
 
   double operator()(const Vec3& p) const { return this->ofSize(size(p)); }
 
-  double ofSize(double h) const
-  {
-    h = h > 0 && std::isfinite(h) ? std::max(h, floor) : floor;
-    return 6.0 * std::sqrt(2.0) / (h * h * h);
-  }
+  double ofSize(double h) const { return densityOfSize(h, floor); }
 
   // W(p): the density integrated along x from x0 to p's x
   double alongX(const Vec3& p) const
@@ -89,7 +99,7 @@ PredictedCost predictCost(const SurfaceComplex& c, const SizeFunction& size)
   {
     x0 = std::min(x0, p[0]);
   }
-  const Density density{ size, 1e-3 * boundingBoxDiagonal(c.points), x0 };
+  const Density density{ size, sizeFloor(c.points), x0 };
   auto add = [&](const SubdomainPair& pair, double flux) {
     if (pair[0] >= 0 && pair[0] < c.subdomainCount)
     {
@@ -276,7 +286,7 @@ SizeFunction cappedSize(const SizeFunction& size, double cap)
   };
 }
 
-CostSamples sampleCost(const TriangleSurface& closed, const SizeFunction& size, std::size_t gridPoints)
+CostSamples sampleCost(const TriangleSurface& closed, const SizeFunction& size, std::size_t gridPoints, double baseSize)
 {
   CostSamples samples;
   if (closed.points.empty() || gridPoints == 0)
@@ -304,8 +314,9 @@ CostSamples sampleCost(const TriangleSurface& closed, const SizeFunction& size, 
   const Vec3 origin = low + Vec3{ (0.5 + 1.234567e-4) * stepX, (0.5 + 2.345678e-4) * stepY, 0.0 };
   const Crossings columns = columnCrossings(closed, origin, stepX, stepY, nx, ny);
   const double z0 = low[2] + (0.5 + 3.456789e-4) * step;
-  const Density density{ size, 1e-3 * boundingBoxDiagonal(closed.points), low[0] };
+  const Density density{ size, sizeFloor(closed.points), low[0] };
   const CoarseSizes coarse(size, low, { 2 * stepX, 2 * stepY, 2 * step }, extent);
+  const double base = baseSize > 0 ? density.ofSize(baseSize) : 0.0;
   for (std::size_t k = 0; k < columns.size(); ++k)
   {
     std::vector<std::pair<double, int>> hits = columns[k];
@@ -334,8 +345,13 @@ CostSamples sampleCost(const TriangleSurface& closed, const SizeFunction& size, 
       for (double z : zs)
       {
         const Vec3 p{ x, y, z };
+        const double weight = share * ((size ? density.ofSize(coarse.at(p)) : 1.0) - base);
+        if (base > 0 && !(weight > 0))
+        {
+          continue;
+        }
         samples.points.push_back(p);
-        samples.weights.push_back(share * (size ? density.ofSize(coarse.at(p)) : 1.0));
+        samples.weights.push_back(weight);
       }
     }
   }
@@ -348,16 +364,19 @@ double volumeFractionForCost(const CostSamples& samples, const SurfaceComplex& c
   const Vec3& normal, double fraction)
 {
   std::vector<std::pair<double, double>> mine; // (n.p, weight)
-  double total = 0;
+  double sampled = 0;
   for (std::size_t i = 0; i < samples.points.size(); ++i)
   {
     if (samples.cells[i] == cell)
     {
       mine.emplace_back(dot(normal, samples.points[i]), samples.weights[i]);
-      total += samples.weights[i];
+      sampled += samples.weights[i];
     }
   }
-  if (mine.size() < 2 || !(total > 0) || !(samples.spacing > 0))
+  const HalfSpaceMeasure volume(complex, cell, normal, BalanceCriterion::Volume);
+  const double perVolume = volume.total() > 0 ? samples.perVolume : 0.0;
+  const double total = sampled + perVolume * volume.total();
+  if ((mine.size() < 2 && !(perVolume > 0)) || !(total > 0) || !(samples.spacing > 0))
   {
     return fraction;
   }
@@ -368,7 +387,7 @@ double volumeFractionForCost(const CostSamples& samples, const SurfaceComplex& c
   // of its cost instead of 50 % from the layer-by-layer steps)
   const double r = 0.5 * samples.spacing;
   auto weightBelow = [&](double offset) {
-    double w = 0;
+    double w = perVolume > 0 ? perVolume * volume.below(offset) : 0.0;
     for (const auto& [t, weight] : mine)
     {
       w += weight * std::clamp((offset - (t - r)) / (2 * r), 0.0, 1.0);
@@ -377,6 +396,11 @@ double volumeFractionForCost(const CostSamples& samples, const SurfaceComplex& c
   };
   const double wanted = fraction * total;
   double low = std::numeric_limits<double>::infinity(), high = -low;
+  if (perVolume > 0)
+  {
+    low = volume.minimumOffset();
+    high = volume.maximumOffset();
+  }
   for (const auto& sample : mine)
   {
     low = std::min(low, sample.first - r);
@@ -388,7 +412,6 @@ double volumeFractionForCost(const CostSamples& samples, const SurfaceComplex& c
     (weightBelow(middle) < wanted ? low : high) = middle;
   }
   const double offset = 0.5 * (low + high);
-  const HalfSpaceMeasure volume(complex, cell, normal, BalanceCriterion::Volume);
   const double share = volume.total() > 0 ? volume.below(offset) / volume.total() : fraction;
   // keep both parts: never a fraction a part cannot be cut at
   return std::clamp(share, 0.02 * fraction, 1.0 - 0.02 * (1.0 - fraction));
@@ -464,11 +487,22 @@ PredictedCost predictUniformCost(const SurfaceComplex& c, double h, const SizeFu
 CostSamples sampleUniformCost(
   const TriangleSurface& closed, double h, std::size_t gridPoints, const SizeFunction& thicknessCap)
 {
-  CostSamples samples = sampleCost(closed, uniformSize(h, thicknessCap), gridPoints);
+  CostSamples samples;
+  if (thicknessCap)
+  {
+    samples = sampleCost(closed, uniformSize(h, thicknessCap), gridPoints, h);
+  }
+  else
+  {
+    const Box box = boxOf(closed.points);
+    const Vec3 extent = box.hi - box.lo;
+    samples.spacing = std::cbrt(std::max(extent[0] * extent[1] * extent[2], 1e-30) / std::max<double>(gridPoints, 1));
+  }
   for (double& w : samples.weights)
   {
     w *= kUniformCostPerRegularTetrahedron;
   }
+  samples.perVolume = kUniformCostPerRegularTetrahedron * densityOfSize(h, sizeFloor(closed.points));
   for (const Triangle& t : closed.triangles)
   {
     samples.points.push_back((1.0 / 3.0) * (closed.points[t[0]] + closed.points[t[1]] + closed.points[t[2]]));
