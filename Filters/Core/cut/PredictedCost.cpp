@@ -22,6 +22,13 @@ double sizeFloor(const std::vector<Vec3>& points)
   return 1e-3 * boundingBoxDiagonal(points);
 }
 
+// The cost grid's step: about `gridPoints` nodes over the box.
+double gridStep(const Box& box, std::size_t gridPoints)
+{
+  const Vec3 extent = box.hi - box.lo;
+  return std::cbrt(std::max(extent[0] * extent[1] * extent[2], 1e-30) / static_cast<double>(gridPoints));
+}
+
 // Regular tetrahedra of edge h per unit volume, h floored (and a size that
 // is not positive and finite taken as the floor).
 double densityOfSize(double h, double floor)
@@ -295,8 +302,7 @@ CostSamples sampleCost(const TriangleSurface& closed, const SizeFunction& size, 
   }
   const Box box = boxOf(closed.points);
   const Vec3 low = box.lo, extent = box.hi - box.lo;
-  const double boxVolume = std::max(extent[0] * extent[1] * extent[2], 1e-30);
-  const double step = std::cbrt(boxVolume / static_cast<double>(gridPoints));
+  const double step = gridStep(box, gridPoints);
   if (!(step > 0) || !std::isfinite(step))
   {
     return samples;
@@ -492,11 +498,9 @@ CostSamples sampleUniformCost(
   {
     samples = sampleCost(closed, uniformSize(h, thicknessCap), gridPoints, h);
   }
-  else
+  else if (!closed.points.empty() && gridPoints > 0)
   {
-    const Box box = boxOf(closed.points);
-    const Vec3 extent = box.hi - box.lo;
-    samples.spacing = std::cbrt(std::max(extent[0] * extent[1] * extent[2], 1e-30) / std::max<double>(gridPoints, 1));
+    samples.spacing = gridStep(boxOf(closed.points), gridPoints); // the spread of the pieces' samples
   }
   for (double& w : samples.weights)
   {

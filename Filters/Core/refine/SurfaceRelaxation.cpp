@@ -293,14 +293,14 @@ void Relaxer::classifyByFeatures()
   const double cosFeature = std::cos(options.featureAngleDegrees * kDegree);
   featureNeighbours.assign(n, {});
   std::vector<std::size_t> ts; // the triangles at one edge: a run of `edges`
-  for (std::size_t i = 0; i < edges.size(); ++i)
+  for (std::size_t e = 0; e < edges.size(); ++e)
   {
-    ts.push_back(static_cast<std::size_t>(edges[i].triangle));
-    if (i + 1 < edges.size() && edges[i + 1].edge == edges[i].edge)
+    ts.push_back(static_cast<std::size_t>(edges[e].triangle));
+    if (e + 1 < edges.size() && edges[e + 1].edge == edges[e].edge)
     {
       continue;
     }
-    const UndirectedEdge edge = edges[i].edge;
+    const UndirectedEdge edge = edges[e].edge;
     bool feature = ts.size() != 2;
     for (std::size_t i = 1; i < ts.size() && !feature; ++i)
     {
