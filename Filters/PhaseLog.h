@@ -19,8 +19,9 @@ namespace ptm::phases
 // The phase now starting (a filter's RequestData calls this first); the
 // phase before ends with a line of kind "phase".
 void setPhase(vtkMultiProcessController* controller, const char* name);
-// One collective call of kind `kind` ("allgather", "allreduce", "agree",
-// "abort") into which this rank puts `bytes`.
+// One collective call of kind `kind` ("allgather", "allreduce", "exchange"
+// between pairs of ranks, "agree", "abort") into which this rank puts
+// `bytes`.
 void collective(vtkMultiProcessController* controller, const char* kind, std::size_t bytes);
 } // namespace ptm::phases
 #endif

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <unordered_map>
 
 namespace ptm
 {
@@ -86,7 +87,155 @@ void allReduce(vtkMultiProcessController* c, std::vector<T>& values, int operati
   c->AllReduce(values.data(), result.data(), static_cast<vtkIdType>(values.size()), operation);
   values.swap(result);
 }
+
+/// @name Exchanges between pairs of ranks
+/// @{
+constexpr int kExchangeTag = 7240;
+
+// The rank `rank` meets in round `round` of a round-robin tournament (the
+// circle method: every pair of ranks meets exactly once in n - 1 rounds, n
+// the rank count rounded up to even); -1 where it sits the round out.
+int partnerInRound(int rank, int ranks, int round)
+{
+  const int n = ranks + ranks % 2;
+  int partner = 0;
+  if (rank == n - 1)
+  {
+    partner = round;
+  }
+  else if (rank == round)
+  {
+    partner = n - 1;
+  }
+  else
+  {
+    partner = ((2 * round - rank) % (n - 1) + (n - 1)) % (n - 1);
+  }
+  return partner < ranks ? partner : -1;
+}
+
+// Sends outgoing[r] to every rank r; returns by rank what each sent here,
+// incomingCounts[r] values from rank r (both ends know every length, so
+// empty messages are not sent at all). Ranks meet in pairs, round by round,
+// the lower rank sending first: blocking sends never wait on each other in
+// a cycle.
+std::vector<std::vector<long long>> exchangeWithRanks(vtkMultiProcessController* c,
+  std::vector<std::vector<long long>>& outgoing, const std::vector<long long>& incomingCounts)
+{
+  const int me = rankOf(c), n = rankCount(c);
+  std::size_t bytes = 0;
+  for (int r = 0; r < n; ++r)
+  {
+    bytes += r == me ? 0 : outgoing[r].size() * sizeof(long long);
+  }
+  phases::collective(c, "exchange", bytes);
+  std::vector<std::vector<long long>> incoming(n);
+  incoming[me] = std::move(outgoing[me]);
+  const int rounds = n > 1 ? n - 1 + n % 2 : 0;
+  for (int round = 0; round < rounds; ++round)
+  {
+    const int p = partnerInRound(me, n, round);
+    if (p < 0)
+    {
+      continue;
+    }
+    incoming[p].resize(static_cast<std::size_t>(incomingCounts[p]));
+    const auto send = [&] {
+      if (!outgoing[p].empty())
+      {
+        c->Send(outgoing[p].data(), static_cast<vtkIdType>(outgoing[p].size()), p, kExchangeTag);
+      }
+    };
+    const auto receive = [&] {
+      if (!incoming[p].empty())
+      {
+        c->Receive(incoming[p].data(), static_cast<vtkIdType>(incoming[p].size()), p, kExchangeTag);
+      }
+    };
+    if (me < p)
+    {
+      send();
+      receive();
+    }
+    else
+    {
+      receive();
+      send();
+    }
+  }
+  return incoming;
+}
+
+// The length every rank will send to this one, from every rank's lengths
+// to every rank (all-gathered: P^2 numbers, 32 KB at 64 ranks).
+std::vector<long long> lengthsToMe(vtkMultiProcessController* c, const std::vector<std::vector<long long>>& outgoing)
+{
+  const int me = rankOf(c), n = rankCount(c);
+  std::vector<long long> mine(n);
+  for (int r = 0; r < n; ++r)
+  {
+    mine[r] = static_cast<long long>(outgoing[r].size());
+  }
+  const std::vector<long long> all = gather(c, mine, nullptr);
+  std::vector<long long> toMe(n);
+  for (int r = 0; r < n; ++r)
+  {
+    toMe[r] = all[static_cast<std::size_t>(r) * n + me];
+  }
+  return toMe;
+}
+/// @}
 } // namespace
+
+std::vector<long long> minimumOverHolders(vtkMultiProcessController* c, long long keyCount,
+  const std::vector<long long>& keys, const std::vector<long long>& values)
+{
+  const int n = rankCount(c);
+  // (key, value) pairs to the rank that settles each key, and where each came from
+  std::vector<std::vector<long long>> pairs(n);
+  std::vector<std::vector<std::size_t>> from(n);
+  for (std::size_t i = 0; i < keys.size(); ++i)
+  {
+    const int settler = static_cast<int>(static_cast<__int128>(keys[i]) * n / std::max(keyCount, 1LL));
+    pairs[settler].push_back(keys[i]);
+    pairs[settler].push_back(values[i]);
+    from[settler].push_back(i);
+  }
+  const std::vector<long long> pairLengths = lengthsToMe(c, pairs);
+  std::vector<std::vector<long long>> received = exchangeWithRanks(c, pairs, pairLengths);
+  std::unordered_map<long long, long long> smallest;
+  for (const std::vector<long long>& r : received)
+  {
+    for (std::size_t j = 0; j < r.size(); j += 2)
+    {
+      auto [it, inserted] = smallest.emplace(r[j], r[j + 1]);
+      it->second = inserted ? it->second : std::min(it->second, r[j + 1]);
+    }
+  }
+  std::vector<std::vector<long long>> answers(n);
+  for (int r = 0; r < n; ++r)
+  {
+    for (std::size_t j = 0; j < received[r].size(); j += 2)
+    {
+      answers[r].push_back(smallest[received[r][j]]);
+    }
+  }
+  std::vector<long long> answerLengths(n);
+  for (int r = 0; r < n; ++r)
+  {
+    answerLengths[r] = static_cast<long long>(from[r].size());
+  }
+  const std::vector<std::vector<long long>> back = exchangeWithRanks(c, answers, answerLengths);
+  std::vector<long long> result(keys.size());
+  for (int r = 0; r < n; ++r)
+  {
+    for (std::size_t j = 0; j < from[r].size(); ++j)
+    {
+      result[from[r][j]] = back[r][j];
+    }
+  }
+  return result;
+}
 
 int rankOf(vtkMultiProcessController* c)
 {

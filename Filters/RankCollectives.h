@@ -52,6 +52,17 @@ void allReduceMax(vtkMultiProcessController* controller, std::vector<long long>&
 void allReduceMin(vtkMultiProcessController* controller, std::vector<long long>& values);
 void allReduceSum(vtkMultiProcessController* controller, std::vector<double>& values);
 
+// For every key this rank passes, the smallest value any rank passed with
+// the same key, in the order of `keys`. Keys lie in [0, keyCount), at most
+// once per rank, and keyCount is the same on every rank. No rank holds a
+// vector of all keys: key k is settled by rank k * P / keyCount, to which
+// every holder sends its (key, value) and which answers each with the
+// minimum (a rendezvous, in two exchanges between pairs of ranks). A rank
+// sends 16 bytes per key it holds and gets 8 back, against 8 x keyCount
+// twice over for an all-reduce of a dense vector.
+std::vector<long long> minimumOverHolders(vtkMultiProcessController* controller, long long keyCount,
+  const std::vector<long long>& keys, const std::vector<long long>& values);
+
 // Every rank's values concatenated in rank order; `counts` gets each rank's length.
 std::vector<long long> allGatherValues(vtkMultiProcessController* controller,
   const std::vector<long long>& local, std::vector<long long>* counts = nullptr);

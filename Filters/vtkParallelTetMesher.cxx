@@ -409,21 +409,36 @@ MeshTotals gatherTotals(
   return totals;
 }
 
-// The lowest subdomain touching every complex point, over all ranks: its
-// rank owns the point.
-std::vector<long long> lowestSubdomainOfPoints(
+// The lowest subdomain touching each complex point of this rank's
+// subdomains, over all ranks: its rank owns the point. Settled by a
+// rendezvous (minimumOverHolders): a rank sends only the points it holds.
+// It was an all-reduce of a vector over every complex point, on every rank.
+std::unordered_map<long long, long long> lowestSubdomainOfPoints(
   vtkMultiProcessController* controller, const ptm::ComplexPiece& piece, const OwnedSubdomains& owned)
 {
-  std::vector<long long> lowest(
-    static_cast<std::size_t>(piece.globalPointCount), std::numeric_limits<long long>::max());
+  std::unordered_map<long long, long long> lowest;
   for (std::size_t k = 0; k < owned.ids.size(); ++k)
   {
     for (ptm::Index g : owned.surfaces[k].globalIds)
     {
-      lowest[g] = std::min<long long>(lowest[g], owned.ids[k]);
+      auto [it, inserted] = lowest.emplace(g, owned.ids[k]);
+      it->second = inserted ? it->second : std::min<long long>(it->second, owned.ids[k]);
     }
   }
-  ptm::allReduceMin(controller, lowest);
+  std::vector<long long> keys, values;
+  keys.reserve(lowest.size());
+  values.reserve(lowest.size());
+  for (const auto& [g, s] : lowest)
+  {
+    keys.push_back(g);
+    values.push_back(s);
+  }
+  const std::vector<long long> overAll =
+    ptm::minimumOverHolders(controller, static_cast<long long>(piece.globalPointCount), keys, values);
+  for (std::size_t i = 0; i < keys.size(); ++i)
+  {
+    lowest[keys[i]] = overAll[i];
+  }
   return lowest;
 }
 
@@ -490,7 +505,8 @@ LocalPoints numberLocalPoints(const OwnedSubdomains& owned, const MeshTotals& to
 }
 
 // The points, their global ids, and the ghost flag of those another rank owns.
-void addPoints(const OwnedSubdomains& owned, const ptm::ComplexPiece& piece, const std::vector<long long>& lowest,
+void addPoints(const OwnedSubdomains& owned, const ptm::ComplexPiece& piece,
+  const std::unordered_map<long long, long long>& lowest,
   int rank, const LocalPoints& l, vtkUnstructuredGrid* output)
 {
   const vtkIdType count = static_cast<vtkIdType>(l.globalId.size());
@@ -508,7 +524,7 @@ void addPoints(const OwnedSubdomains& owned, const ptm::ComplexPiece& piece, con
     const auto [k, i] = l.first[static_cast<std::size_t>(p)];
     const long long gid = l.globalId[static_cast<std::size_t>(p)];
     const bool shared = i < owned.surfaces[k].globalIds.size();
-    const int owner = shared ? ptm::owningRank(static_cast<int>(lowest[gid]), piece.subdomainRank) : rank;
+    const int owner = shared ? ptm::owningRank(static_cast<int>(lowest.at(gid)), piece.subdomainRank) : rank;
     xyz->SetTypedTuple(p, owned.meshes[k].points[i].data());
     pointIds->SetValue(p, gid);
     ghosts->SetValue(p, owner == rank ? 0 : vtkDataSetAttributes::DUPLICATEPOINT);
@@ -586,7 +602,7 @@ void addTetrahedra(OwnedSubdomains& owned, const MeshTotals& totals, int rank, c
 
 // Releases the tetrahedra of `owned` (the points stay).
 void assembleVolume(OwnedSubdomains& owned, const MeshTotals& totals, const ptm::ComplexPiece& piece,
-  const std::vector<long long>& lowest, int rank, vtkUnstructuredGrid* output)
+  const std::unordered_map<long long, long long>& lowest, int rank, vtkUnstructuredGrid* output)
 {
   const LocalPoints local = numberLocalPoints(owned, totals);
   output->Initialize();
@@ -886,7 +902,7 @@ int vtkParallelTetMesher::RequestData(
   run.Step(0.9, "Numbering");
   ptm::phases::setPhase(controller, "numbering and assembly");
   const MeshTotals totals = gatherTotals(controller, piece, owned);
-  const std::vector<long long> lowest = lowestSubdomainOfPoints(controller, piece, owned);
+  const std::unordered_map<long long, long long> lowest = lowestSubdomainOfPoints(controller, piece, owned);
   run.Step(0.95, "Assembling");
   assembleVolume(owned, totals, piece, lowest, run.Rank(), output);
   assembleBoundary(owned, totals, boundary);

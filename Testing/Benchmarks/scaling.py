@@ -12,6 +12,7 @@ at the same synchronisation. On P real cores the wall time is then about
 
     sum over stretches i of (max over ranks of the processor time in i)
       + sum over collectives of (latency x ceil(log2 P) + bytes moved / bandwidth)
+      + sum over exchanges of (latency x (P - 1) + largest bytes a rank sends / bandwidth)
 
 with `bytes moved` the bytes every rank receives (an all-gather delivers all
 ranks' contributions to each; an all-reduce about twice the vector). The
@@ -84,6 +85,9 @@ def predict(logs, latency, bandwidth):
         if ranks > 1 and kind in ("allgather", "allreduce", "agree", "abort"):
             moved = sum(contributed) if kind == "allgather" else 2 * max(contributed)
             communication += latency * hops + moved / bandwidth
+        elif ranks > 1 and kind == "exchange":
+            # pairs of ranks in P - 1 rounds; a rank sends what it logged
+            communication += latency * (ranks - 1) + max(contributed) / bandwidth
     return {"phases": phases, "communication": communication,
             "predicted_wall": sum(phases.values()) + communication, "bytes_sent": sent,
             "processor_seconds": [log[-1][1] for log in logs]}
