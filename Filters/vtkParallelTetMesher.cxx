@@ -9,6 +9,7 @@
 #include "PropertyChecks.h"
 #include "RankCollectives.h"
 #include "SizeField.h"
+#include "SizeFunction.h"
 #include "StageRun.h"
 #include "SubdomainSurface.h"
 #include "SurfaceComplexArrays.h"
@@ -107,12 +108,6 @@ std::string memoryShortfall(
   return {};
 }
 
-// The edge of the regular tetrahedron of volume v: the target size of the
-// boundary refinement, so that surface and volume are sized alike.
-double regularTetrahedronEdge(double v)
-{
-  return std::cbrt(6.0 * std::sqrt(2.0) * v);
-}
 // One subdomain refined (when asked) and meshed.
 struct MeshedSubdomain
 {
@@ -710,7 +705,7 @@ ptm::TetMeshingOptions meshingOptions(vtkParallelTetMesher* filter, const ptm::C
   options.radiusEdgeRatio = filter->GetRadiusEdgeRatio();
   options.maximumVolume = filter->GetMaximumVolume() > 0 || !(piece.inputMeanEdgeLength > 0)
     ? filter->GetMaximumVolume()
-    : std::pow(piece.inputMeanEdgeLength, 3) / (6.0 * std::sqrt(2.0));
+    : ptm::regularTetrahedronVolume(piece.inputMeanEdgeLength);
   options.minimumDihedralAngle = filter->GetMinimumDihedralAngle();
   options.sliverRepairAngle = filter->GetSliverRepairAngle();
   options.timeLimitSeconds = filter->GetTetGenTimeLimit();
@@ -883,7 +878,8 @@ int vtkParallelTetMesher::RequestData(
   // Independent meshing of every owned subdomain.
   OwnedSubdomains owned(ptm::ownedSubdomains(piece, run.Rank()));
   ptm::SurfaceRefinementOptions refinement;
-  refinement.size = regularTetrahedronEdge(options.maximumVolume);
+  // the edge of the volume bound's regular tetrahedron: surface and volume sized alike
+  refinement.size = ptm::regularTetrahedronEdge(options.maximumVolume);
   refinement.minimumAngleDegrees = this->BoundaryMinimumAngle;
   refinement.segmentSpacingFloor = this->BoundarySpacingFloor;
   refinement.coplanarToleranceDegrees = this->CoplanarTolerance;

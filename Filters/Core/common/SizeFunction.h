@@ -4,12 +4,26 @@
 #include "Vec3.h"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 
 namespace ptm
 {
 // A size field: the edge length wanted at a point in space. Empty: none.
 using SizeFunction = std::function<double(const Vec3&)>;
+
+// The volume of the regular tetrahedron of edge h: TetGen's volume bound
+// (-a) for the mesh size h, as tetmesh.py --size H sets MaximumVolume.
+inline double regularTetrahedronVolume(double h)
+{
+  return h * h * h / (6.0 * std::sqrt(2.0));
+}
+
+// The edge of the regular tetrahedron of volume v (the inverse).
+inline double regularTetrahedronEdge(double v)
+{
+  return std::cbrt(6.0 * std::sqrt(2.0) * v);
+}
 
 // The size wanted at p under the largest size `size`: the field where it is
 // set, positive and below `size`, never under size / 1000 (a field near 0,

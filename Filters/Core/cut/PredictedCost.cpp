@@ -34,7 +34,7 @@ double gridStep(const Box& box, std::size_t gridPoints)
 double densityOfSize(double h, double floor)
 {
   h = h > 0 && std::isfinite(h) ? std::max(h, floor) : floor;
-  return 6.0 * std::sqrt(2.0) / (h * h * h);
+  return 1.0 / regularTetrahedronVolume(h);
 }
 
 struct Density

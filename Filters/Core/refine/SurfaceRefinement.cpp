@@ -682,7 +682,7 @@ bool meshFacet(const SubdomainSurface& s, const Facet& facet, const std::vector<
 // predicts for the closed surface `s`: 2 x its volume / the bound.
 double expectedTetrahedra(const SubdomainSurface& s, double size)
 {
-  return 2.0 * std::fabs(enclosedVolume(s.surface)) / (size * size * size / (6.0 * std::sqrt(2.0)));
+  return 2.0 * std::fabs(enclosedVolume(s.surface)) / regularTetrahedronVolume(size);
 }
 
 // The most points the refinement may put on one subdomain's segments, per

@@ -3,6 +3,7 @@
 #include "BoundarySliverRepair.h"
 #include "Fnv1a.h"
 #include "SelfIntersectionCheck.h"
+#include "SizeFunction.h"
 #include "TetGenProcess.h"
 #include "TetGenStream.h"
 #include "TetrahedronQuality.h"
@@ -1193,7 +1194,7 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
     return r;
   }
   const double volume =
-    options.maximumVolume > 0 ? options.maximumVolume : meanEdge * meanEdge * meanEdge / (6.0 * std::sqrt(2.0));
+    options.maximumVolume > 0 ? options.maximumVolume : regularTetrahedronVolume(meanEdge);
   r.error = options.surfaceKnownValid ? std::string() : selfIntersectionError(s);
   if (!r.error.empty())
   {
