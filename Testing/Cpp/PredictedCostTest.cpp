@@ -14,13 +14,24 @@ using namespace ptm::test;
 
 namespace
 {
-SurfaceComplex boxInFour(CutStrategy strategy)
+// Options that cut into k subdomains along x by `criterion`, at the largest
+// size `maximumSize` (0: the input's mean edge).
+DecompositionOptions alongX(int k, CutStrategy strategy, BalanceCriterion criterion = BalanceCriterion::Volume,
+  double maximumSize = 0)
 {
   DecompositionOptions options;
-  options.numberOfSubdomains = 4;
+  options.numberOfSubdomains = k;
   options.strategy = strategy;
   options.direction = CutDirection::X;
-  const DecompositionResult r = decomposeVolumeBalanced(subdividedBox({ 0, 0, 0 }, { 2, 1, 1 }, 6), options);
+  options.criterion = criterion;
+  options.costMaximumSize = maximumSize;
+  return options;
+}
+
+SurfaceComplex boxInFour(CutStrategy strategy)
+{
+  const DecompositionResult r =
+    decomposeVolumeBalanced(subdividedBox({ 0, 0, 0 }, { 2, 1, 1 }, 6), alongX(4, strategy));
   EXPECT_TRUE(r.ok) << r.error;
   return r.complex;
 }
@@ -197,13 +208,8 @@ TEST(CostSamples, DecompositionByCostBalancesTheField)
   const SizeFunction graded = [](const Vec3& p) { return 0.05 + 0.1 * p[0]; };
   for (CutStrategy strategy : { CutStrategy::ParallelPlanes, CutStrategy::RecursiveBisection })
   {
-    DecompositionOptions options;
-    options.numberOfSubdomains = 4;
-    options.strategy = strategy;
-    options.direction = CutDirection::X;
-    options.criterion = BalanceCriterion::PredictedCost;
+    DecompositionOptions options = alongX(4, strategy, BalanceCriterion::PredictedCost, 1.0);
     options.costSize = graded;
-    options.costMaximumSize = 1.0;
     const DecompositionResult r = decomposeVolumeBalanced(subdividedBox({ 0, 0, 0 }, { 2, 1, 1 }, 6), options);
     ASSERT_TRUE(r.ok) << r.error;
     const std::vector<double> cost = predictCost(r.complex, graded).regularTetrahedra;
@@ -231,12 +237,8 @@ TEST(CostSamples, DecompositionByUniformCostCountsTheInputPieces)
   std::vector<double> imbalance;
   for (BalanceCriterion criterion : { BalanceCriterion::Volume, BalanceCriterion::PredictedCost })
   {
-    DecompositionOptions options;
-    options.numberOfSubdomains = 2;
-    options.direction = CutDirection::X;
-    options.criterion = criterion;
-    options.costMaximumSize = h;
-    const DecompositionResult r = decomposeVolumeBalanced(two, options);
+    const DecompositionResult r =
+      decomposeVolumeBalanced(two, alongX(2, CutStrategy::RecursiveBisection, criterion, h));
     ASSERT_TRUE(r.ok) << r.error;
     const std::vector<double> cost = predictUniformCost(r.complex, h).tetrahedra;
     const double mean = 0.5 * (cost[0] + cost[1]);
@@ -267,13 +269,8 @@ TEST(CostSamples, UniformCostWeighsEqualBodiesAlike)
   EXPECT_NEAR(samples.perVolume, kUniformCostPerRegularTetrahedron * 6.0 * std::sqrt(2.0) / 1e-3, 1e-9);
   for (CutStrategy strategy : { CutStrategy::ParallelPlanes, CutStrategy::RecursiveBisection })
   {
-    DecompositionOptions options;
-    options.numberOfSubdomains = 2;
-    options.strategy = strategy;
-    options.direction = CutDirection::X;
-    options.criterion = BalanceCriterion::PredictedCost;
-    options.costMaximumSize = 0.1;
-    const DecompositionResult r = decomposeVolumeBalanced(two, options);
+    const DecompositionResult r =
+      decomposeVolumeBalanced(two, alongX(2, strategy, BalanceCriterion::PredictedCost, 0.1));
     ASSERT_TRUE(r.ok) << r.error;
     ASSERT_EQ(r.complex.planes.size(), 1u);
     const double x = r.complex.planes.front().origin[0];
