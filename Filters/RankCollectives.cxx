@@ -196,7 +196,10 @@ std::vector<long long> minimumOverHolders(vtkMultiProcessController* c, long lon
   std::vector<std::vector<std::size_t>> from(n);
   for (std::size_t i = 0; i < keys.size(); ++i)
   {
-    const int settler = static_cast<int>(static_cast<__int128>(keys[i]) * n / std::max(keyCount, 1LL));
+    // clamped, so a key outside [0, keyCount) cannot index past `pairs`: it
+    // is still settled by one rank, the same on every rank that holds it
+    const long long spread = static_cast<long long>(static_cast<__int128>(keys[i]) * n / std::max(keyCount, 1LL));
+    const int settler = static_cast<int>(std::clamp<long long>(spread, 0, n - 1));
     pairs[settler].push_back(keys[i]);
     pairs[settler].push_back(values[i]);
     from[settler].push_back(i);

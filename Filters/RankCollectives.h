@@ -53,8 +53,9 @@ void allReduceMin(vtkMultiProcessController* controller, std::vector<long long>&
 void allReduceSum(vtkMultiProcessController* controller, std::vector<double>& values);
 
 // For every key this rank passes, the smallest value any rank passed with
-// the same key, in the order of `keys`. Keys lie in [0, keyCount), at most
-// once per rank, and keyCount is the same on every rank. No rank holds a
+// the same key, in the order of `keys`. Keys should lie in [0, keyCount)
+// (others are settled by the first or last rank, still correctly, but
+// unevenly), at most once per rank, and keyCount is the same on every rank. No rank holds a
 // vector of all keys: key k is settled by rank k * P / keyCount, to which
 // every holder sends its (key, value) and which answers each with the
 // minimum (a rendezvous, in two exchanges between pairs of ranks). A rank

@@ -416,8 +416,7 @@ std::unordered_map<long long, long long> lowestSubdomainOfPoints(
   {
     for (ptm::Index g : owned.surfaces[k].globalIds)
     {
-      auto [it, inserted] = lowest.emplace(g, owned.ids[k]);
-      it->second = inserted ? it->second : std::min<long long>(it->second, owned.ids[k]);
+      lowest.emplace(g, owned.ids[k]); // owned.ids ascend: the first subdomain to hold g is its lowest here
     }
   }
   std::vector<long long> keys, values;
