@@ -149,9 +149,67 @@ bool hasPointFrom(const InterfaceRegion& region, Index firstNewPoint)
     [&](const DirectedEdge& e) { return e[0] >= firstNewPoint || e[1] >= firstNewPoint; });
 }
 
+// Where the faces of a cut's new interface lie: within the box of its
+// boundary points and within the slab of the plane they span, [low, high]
+// along the normal (up to round-off; the interface bends only through
+// boundary points left off the plane, and its inner points and triangles lie
+// between those). A face that crosses the new interface reaches into both.
+// The box alone let an inclined cut through a ball check nearly the whole
+// part: the box of an inclined disc holds most of the ball.
+struct CutZone
+{
+  int planeId = -1;
+  Box box;
+  Vec3 normal{ 0, 0, 0 };
+  double low = 0, high = 0;
+  bool reaches(const Box& b) const
+  {
+    if (!box.overlaps(b))
+    {
+      return false;
+    }
+    double lo = 0, hi = 0; // the range of normal . x over the corners of b
+    for (int k = 0; k < 3; ++k)
+    {
+      lo += std::min(normal[k] * b.lo[k], normal[k] * b.hi[k]);
+      hi += std::max(normal[k] * b.lo[k], normal[k] * b.hi[k]);
+    }
+    return hi >= low && lo <= high;
+  }
+};
+
+// The zone of the interfaces plane `planeId` made (an empty box if none),
+// widened by 1e-9 of its box's diagonal for round-off.
+CutZone cutZoneOf(const SurfaceComplex& c, int planeId)
+{
+  CutZone zone;
+  zone.planeId = planeId;
+  zone.normal = c.planes[planeId].normal;
+  zone.low = std::numeric_limits<double>::infinity();
+  zone.high = -zone.low;
+  for (const InterfaceRegion& region : c.interfaces)
+  {
+    if (region.planeId != planeId)
+    {
+      continue;
+    }
+    for (const DirectedEdge& e : region.edges)
+    {
+      const Vec3& p = c.points[e[0]];
+      zone.box.add(p);
+      zone.low = std::min(zone.low, dot(zone.normal, p));
+      zone.high = std::max(zone.high, dot(zone.normal, p));
+    }
+  }
+  const double margin = 1e-9 * norm(zone.box.hi - zone.box.lo);
+  zone.low -= margin;
+  zone.high += margin;
+  return zone;
+}
+
 // The interface regions of a part and what a cut did to them. A region of
-// one of the cut's two parts that reaches into the box of the new interface
-// (`cutBox`) may have been split by the cut, and is triangulated anew as a
+// one of the cut's two parts that reaches into the zone of the new interface
+// (`cut`) may have been split by the cut, and is triangulated anew as a
 // whole (missed at first: a piece of example005's first interface crossed a
 // surface triangle far from the cut that split it, K = 10); so may a region
 // another part shares with them, or one that got a point of the cut (at
@@ -169,14 +227,21 @@ struct PartRegions
   std::vector<std::vector<Index>> points;
   std::vector<Box> boxes;
   std::vector<Box> zones;
-  std::vector<Index> zonePoints; // the point of each zone (-1: none)
+  std::vector<Index> zonePoints; // the point of each zone
+  // the new interface bends (a region of the cut's plane has points off it);
+  // its bent points get no zone of their own: its faces, and every face
+  // that may cross them, reach into the cut's zone, which is near for the
+  // cut's two parts (hasCut)
+  bool cutBent = false;
+  bool hasCut = false;
+  CutZone cut;
 };
 
 PartRegions regionsOfPart(
-  const SurfaceComplex& c, int cell, const Box& cutBox, int below, int above, Index firstNewPoint)
+  const SurfaceComplex& c, int cell, const CutZone& cut, int below, int above, Index firstNewPoint)
 {
   PartRegions r;
-  const double roundOff = 1e-10 * norm(cutBox.hi - cutBox.lo);
+  const double roundOff = 1e-10 * norm(cut.box.hi - cut.box.lo);
   const bool cutPart = cell == below || cell == above;
   std::vector<char> changed;
   std::vector<Box> changedBoxes;
@@ -196,7 +261,7 @@ PartRegions regionsOfPart(
     r.boxes.push_back(box);
     const bool shared = region.pair[0] == below || region.pair[0] == above || region.pair[1] == below ||
       region.pair[1] == above;
-    changed.push_back((cutPart || shared || hasPointFrom(region, firstNewPoint)) && box.overlaps(cutBox));
+    changed.push_back((cutPart || shared || hasPointFrom(region, firstNewPoint)) && cut.reaches(box));
     if (changed.back())
     {
       changedBoxes.push_back(box);
@@ -216,9 +281,12 @@ PartRegions regionsOfPart(
       continue;
     }
     const CuttingPlane& plane = c.planes[r.regions[k]->planeId];
+    const bool ofTheCut = r.regions[k]->planeId == cut.planeId;
     for (Index v : r.points[k])
     {
-      if (std::fabs(dot(plane.normal, c.points[v] - plane.origin)) > roundOff && !zoneOf.count(v))
+      const bool bent = std::fabs(dot(plane.normal, c.points[v] - plane.origin)) > roundOff;
+      r.cutBent |= bent && ofTheCut;
+      if (bent && !ofTheCut && !zoneOf.count(v))
       {
         zoneOf.emplace(v, r.zones.size());
         r.zones.emplace_back();
@@ -364,7 +432,8 @@ bool partSurface(const SurfaceComplex& c, int cell, const PartRegions& r, bool w
   refined.smooth = false;
   std::vector<Box> zones = r.zones;
   auto inZone = [&](const Box& box) {
-    return std::any_of(zones.begin(), zones.end(), [&](const Box& z) { return z.overlaps(box); });
+    return (r.hasCut && r.cut.reaches(box)) ||
+      std::any_of(zones.begin(), zones.end(), [&](const Box& z) { return z.overlaps(box); });
   };
   std::unordered_map<Index, Index> local;
   TriangleSurface all;
@@ -433,9 +502,9 @@ bool partSurface(const SurfaceComplex& c, int cell, const PartRegions& r, bool w
 }
 
 // Whether the surface of part `cell` crosses itself where a cut of `below`
-// and `above` changed it (within `cutBox`, the box of the new interface),
+// and `above` changed it (within `cut`, the zone of the new interface),
 // checked with CGAL's exact predicates: the faces reaching into the zones
-// of regionsOfPart, and for the two new parts into the cut's box. Farther
+// of regionsOfPart, and for the two new parts into the cut's zone. Farther
 // faces are as they were, already checked (with the input or the parent
 // part). Only the near faces are handed to CGAL when they form a polygon
 // mesh by themselves: building the whole part for every check made the
@@ -443,22 +512,19 @@ bool partSurface(const SurfaceComplex& c, int cell, const PartRegions& r, bool w
 // bisection: 62 % of 8.6 s; the neighbours of a part cut early are whole
 // halves). A region that cannot be triangulated counts as crossing.
 bool partCrossesItself(
-  const SurfaceComplex& c, int cell, const Box& cutBox, int below, int above, Index firstNewPoint)
+  const SurfaceComplex& c, int cell, const CutZone& cut, int below, int above, Index firstNewPoint)
 {
-  PartRegions r = regionsOfPart(c, cell, cutBox, below, above, firstNewPoint);
-  if (r.zones.empty())
+  PartRegions r = regionsOfPart(c, cell, cut, below, above, firstNewPoint);
+  if (r.zones.empty() && !r.cutBent)
   {
     return false;
   }
-  if (cell == below || cell == above)
-  {
-    // the new interface's box too: without it the check let through cuts
-    // the whole-part check had refused, and CGAL's spool at K = 64 with
-    // parallel planes then had a subdomain crossing itself (OpenSCAD's
-    // example005 one TetGen could not mesh); with it both mesh as before
-    r.zones.push_back(cutBox);
-    r.zonePoints.push_back(-1);
-  }
+  // the new interface's zone too: without it the check let through cuts
+  // the whole-part check had refused, and CGAL's spool at K = 64 with
+  // parallel planes then had a subdomain crossing itself (OpenSCAD's
+  // example005 one TetGen could not mesh); with it both mesh as before
+  r.hasCut = cell == below || cell == above;
+  r.cut = cut;
   TriangleSurface patch;
   std::vector<Index> near;
   if (!partSurface(c, cell, r, false, patch, near))
@@ -520,7 +586,7 @@ struct PartCut
   Trial balancedCut(const Vec3& n, double& at, bool& tooThin);
   bool interfacesValid(const Trial& trial) const;
   bool soundParts(const Trial& trial) const;
-  bool anyPartCrosses(const SurfaceComplex& trialComplex, const std::set<int>& parts, const Box& cutBox) const;
+  bool anyPartCrosses(const SurfaceComplex& trialComplex, const std::set<int>& parts, const CutZone& cut) const;
   Trial soundCutInstead(Trial&& unsound, const Vec3& proposed);
   bool cutAlongEarlierLine(const NearlyContinuedLine& continued, const Vec3& normal,
     const Vec3& proposedNormal, double bestOffset, Trial& best);
@@ -876,22 +942,12 @@ bool PartCut::soundParts(const Trial& trial) const
   // of a split region is triangulated anew (example005 at K = 10: a piece of
   // the first interface crossed a surface triangle of the part on its other
   // side, never checked).
-  Box cutBox;
-  std::set<int> parts{ below, above };
-  for (const InterfaceRegion& region : trial.complex.interfaces)
-  {
-    if (region.planeId == planeId)
-    {
-      for (const DirectedEdge& e : region.edges)
-      {
-        cutBox.add(trial.complex.points[e[0]]);
-      }
-    }
-  }
-  if (!(cutBox.lo[0] <= cutBox.hi[0]))
+  const CutZone cut = cutZoneOf(trial.complex, planeId);
+  if (!(cut.box.lo[0] <= cut.box.hi[0]))
   {
     return true; // no interface: the plane passed between bodies of the part
   }
+  std::set<int> parts{ below, above };
   // So do the parts of a region that got a point of this cut without being
   // split (an edge it shares with a split region was split): a region of
   // another plane bent at the new point may fold onto a neighbour (FreeCAD's
@@ -911,12 +967,12 @@ bool PartCut::soundParts(const Trial& trial) const
       }
     }
   }
-  return !anyPartCrosses(trial.complex, parts, cutBox);
+  return !anyPartCrosses(trial.complex, parts, cut);
 }
 
 // Whether one of `parts` crosses itself (partCrossesItself), with the checks
 // shared among processes where options.checksPart is set (see there).
-bool PartCut::anyPartCrosses(const SurfaceComplex& trialComplex, const std::set<int>& parts, const Box& cutBox) const
+bool PartCut::anyPartCrosses(const SurfaceComplex& trialComplex, const std::set<int>& parts, const CutZone& cut) const
 {
   int found = 0;
   std::string why;
@@ -925,7 +981,7 @@ bool PartCut::anyPartCrosses(const SurfaceComplex& trialComplex, const std::set<
     for (auto it = parts.begin(); it != parts.end() && found == 0; ++it)
     {
       if ((!options.checksPart || options.checksPart(*it)) &&
-        partCrossesItself(trialComplex, *it, cutBox, below, above, static_cast<Index>(c.points.size())))
+        partCrossesItself(trialComplex, *it, cut, below, above, static_cast<Index>(c.points.size())))
       {
         found = 1;
       }
