@@ -4,8 +4,10 @@
 #include "TetGenProcess.h"
 #include "TetGenStream.h"
 #include "TetGenSubdomainMesher.h"
+#include "TetGenWatch.h"
 #include "TetrahedronQuality.h"
 
+#include <csignal>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -259,8 +261,9 @@ TEST(TetGenSubdomainMesher, AbortInOnePointOrderIsRetriedInAnother)
 TEST(TetGenSubdomainMesher, StallInOnePointOrderIsStoppedAndRetriedInAnother)
 {
   // TetGen 1.5 loops for ever recovering this surface's boundary with its
-  // points in file order (bound of the benchmark it came from); the automatic
-  // processor-time limit stops that run and the reversed order meshes it
+  // points in file order (bound of the benchmark it came from); the recovery
+  // watch (TetGenWatch.h; before it, the automatic processor-time limit)
+  // stops that run and the reversed order meshes it
   const TriangleSurface surface = regressionSurface("tetgen_stall_in_canonical_order.off");
   TetMeshingOptions options;
   options.maximumVolume = 1.6696252433859985e-06;
@@ -270,6 +273,53 @@ TEST(TetGenSubdomainMesher, StallInOnePointOrderIsStoppedAndRetriedInAnother)
   const TetMeshingResult r = meshClosedSurface(surface, options);
   EXPECT_EQ(r.attempts, 2);
   expectConformingMesh(surface, r, "stalled, then retried in another order");
+}
+
+namespace
+{
+// How waitForTetGen ends on `s` in its own order, meshed with `switches`
+// and the recovery watch on; the process is killed and reaped after.
+TetGenWait watchedRun(const TriangleSurface& s, const std::string& switches)
+{
+  std::vector<Index> order(s.points.size()), facets(s.triangles.size());
+  std::iota(order.begin(), order.end(), Index{ 0 });
+  std::iota(facets.begin(), facets.end(), Index{ 0 });
+  std::vector<int> position(s.points.size());
+  std::iota(position.begin(), position.end(), 0);
+  tetgenio in;
+  fillTetGenInput(s, order, position, facets, {}, {}, in);
+  std::FILE* phases = std::tmpfile();
+  TetGenProcess process;
+  std::string error;
+  // 30 s of processor time: if the watch misses the stall, the kernel ends
+  // the run and the wait returns Ready, failing the test, never hanging it
+  if (!startTetGenProcess({ &in, nullptr, switches, 30.0, phases }, process, error))
+  {
+    ADD_FAILURE() << error;
+    std::fclose(phases);
+    return TetGenWait::WallLimit;
+  }
+  RecoveryWatch watch;
+  watch.active = true;
+  const TetGenWait waited = waitForTetGen(process, phases, 600.0, watch);
+  ::kill(process.pid, SIGKILL);
+  ::close(process.fd);
+  int status = 0;
+  ::waitpid(process.pid, &status, 0);
+  std::fclose(phases);
+  return waited;
+}
+} // namespace
+
+// The run of the surface above that stalls in boundary recovery is stopped
+// by the watch, not by its processor-time limit; a surface TetGen meshes is
+// left to finish.
+TEST(TetGenWatch, AStallInBoundaryRecoveryIsStoppedAndAMeshIsNot)
+{
+  const std::string switches = "pYzQq2/10a1.6696252433859985e-06";
+  EXPECT_EQ(watchedRun(regressionSurface("tetgen_stall_in_canonical_order.off"), switches),
+    TetGenWait::StalledInRecovery);
+  EXPECT_EQ(watchedRun(icosphere({ 0, 0, 0 }, 1.0, 3), "pYzQq2/10a1e-4"), TetGenWait::Ready);
 }
 
 TEST(TetGenSubdomainMesher, AStallWhileRefiningEndsTheRunsAndTheBudgetBoundsThem)

@@ -6,6 +6,7 @@
 #include "SizeFunction.h"
 #include "TetGenProcess.h"
 #include "TetGenStream.h"
+#include "TetGenWatch.h"
 #include "TetrahedronQuality.h"
 
 #include <tetgen.h>
@@ -177,27 +178,6 @@ struct TimeLimits
   }
 };
 
-// Waits until fd has data to read or the time limit has passed; false on
-// timeout.
-bool waitReadable(int fd, double seconds)
-{
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  for (;;)
-  {
-    const double left = std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count();
-    if (left <= 0)
-    {
-      return false;
-    }
-    pollfd p{ fd, POLLIN, 0 };
-    const int r = ::poll(&p, 1, static_cast<int>(std::min(left * 1000.0 + 1.0, 60000.0)));
-    if (r > 0 || (r < 0 && errno != EINTR))
-    {
-      return true; // data, end of file or an error: the read tells which
-    }
-  }
-}
-
 // What TetGen printed of its phases in a run's log (a temporary file its
 // process writes its standard output to, unbuffered, so a run the kernel
 // stops keeps every line): whether the run got past boundary recovery.
@@ -240,11 +220,13 @@ double reapChild(pid_t pid, int& waitStatus)
 // some inputs TetGen 1.5 loops for ever in boundary recovery (switch Y):
 // a child that has used more than cpuSeconds of processor time is stopped by
 // the kernel (RLIMIT_CPU, so a loaded or oversubscribed machine does not
-// stop a run that is merely slow), and one still running after wallSeconds
-// is killed; both set timedOut.
+// stop a run that is merely slow), one still running after wallSeconds is
+// killed, and with an active `watch` one that stalls in boundary recovery
+// is killed early (TetGenWatch.h); all three set timedOut, and the first
+// two count in limits.stopped (runs stopped at the limit).
 bool runTetGenIsolated(tetgenio& in, const std::string& switches, TimeLimits& limits,
   std::vector<double>& points, std::vector<int>& tets, int& status, int& code,
-  bool& timedOut, std::string& error, tetgenio* addin = nullptr)
+  bool& timedOut, std::string& error, tetgenio* addin = nullptr, const RecoveryWatch& watch = {})
 {
   timedOut = false;
   limits.stoppedAfterRecovery = false;
@@ -263,18 +245,29 @@ bool runTetGenIsolated(tetgenio& in, const std::string& switches, TimeLimits& li
   {
     return false;
   }
-  if (!waitReadable(process.fd, wallSeconds))
+  const TetGenWait waited = waitForTetGen(process, phases.get(), wallSeconds, watch);
+  if (waited != TetGenWait::Ready)
   {
     ::kill(process.pid, SIGKILL);
     ::close(process.fd);
     int ignored = 0;
-    limits.spent += reapChild(process.pid, ignored);
-    ++limits.stopped;
+    const double used = reapChild(process.pid, ignored);
+    limits.spent += used;
+    limits.stopped += waited == TetGenWait::WallLimit ? 1 : 0;
     limits.stoppedAfterRecovery = pastBoundaryRecovery(phases.get());
     std::ostringstream msg;
-    msg << "TetGen did not finish within " << wallSeconds
-        << " s and was stopped (TetGen 1.5 can loop for ever recovering the boundary of "
-           "nearly degenerate input, or refine for very long next to nearly flat triangles)";
+    if (waited == TetGenWait::StalledInRecovery)
+    {
+      msg.precision(3);
+      msg << "TetGen stalled recovering the boundary (" << used
+          << " s of processor time, most of it in boundary recovery; TetGenWatch.h) and was stopped";
+    }
+    else
+    {
+      msg << "TetGen did not finish within " << wallSeconds
+          << " s and was stopped (TetGen 1.5 can loop for ever recovering the boundary of "
+             "nearly degenerate input, or refine for very long next to nearly flat triangles)";
+    }
     error = msg.str();
     timedOut = true;
     status = 1;
@@ -604,8 +597,13 @@ TetGenRuns runInOrders(const TriangleSurface& s, const TetMeshingOptions& option
     runs.failure.clear();
     runs.status = runs.code = 0;
     bool timedOut = false;
+    // a stall in boundary recovery is cut short (TetGenWatch.h) but in the
+    // last order this loop may try, which runs to the limit as before
+    RecoveryWatch watch;
+    watch.active = attempt + 1 < options.inputOrders &&
+      !(stalled && attempt + 1 - firstOrder >= kInputOrdersAfterAStall);
     const bool ran = runTetGenIsolated(in, switches, limits, runs.points, runs.tets, runs.status,
-      runs.code, timedOut, runs.failure, options.insidePoints.empty() ? nullptr : &addin);
+      runs.code, timedOut, runs.failure, options.insidePoints.empty() ? nullptr : &addin, watch);
     meshed = ran && runs.status == 0;
     runs.attempts = attempt + 1 - firstOrder;
     runs.lastOrder = attempt;
