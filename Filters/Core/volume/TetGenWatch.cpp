@@ -86,9 +86,11 @@ public:
     , Watch(watch)
   {
   }
+  // whether there is anything to watch (a watch asked for, phases to read)
+  bool On() const { return this->Watch.active && this->Phases; }
   bool Stalled()
   {
-    if (!this->Watch.active || !this->Phases || this->Done)
+    if (!this->On() || this->Done)
     {
       return false;
     }
@@ -126,7 +128,6 @@ TetGenWait waitForTetGen(const TetGenProcess& process, std::FILE* phases, double
 {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(wallSeconds);
   RecoveryTimer recovery(process.pid, phases, watch);
-  const bool watching = watch.active && phases;
   for (;;)
   {
     const double left = std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count();
@@ -134,7 +135,7 @@ TetGenWait waitForTetGen(const TetGenProcess& process, std::FILE* phases, double
     {
       return TetGenWait::WallLimit;
     }
-    const int wait = watching ? kWatchMilliseconds : static_cast<int>(std::min(left * 1000.0 + 1.0, 60000.0));
+    const int wait = recovery.On() ? kWatchMilliseconds : static_cast<int>(std::min(left * 1000.0 + 1.0, 60000.0));
     pollfd p{ process.fd, POLLIN, 0 };
     const int r = ::poll(&p, 1, wait);
     if (r > 0 || (r < 0 && errno != EINTR))
