@@ -2,6 +2,7 @@
 
 #include "CADFaceIds.h"
 #include "GlobalMeshNumbering.h"
+#include "MemoryCheck.h"
 #include "OffFormat.h"
 #include "PhaseLog.h"
 #include "PipelineRequests.h"
@@ -44,7 +45,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
-#include <map>
 #include <exception>
 #include <limits>
 #include <new>
@@ -53,59 +53,24 @@
 
 namespace
 {
-// Why the requested size cannot fit, or nothing: the estimated meshes of the
-// ranks that share a machine against that machine's memory, the same
-// decision on every rank (all of it is gathered).
+// The mesh of each rank's subdomains against the memory of its machine
+// (MemoryCheck.h).
 std::string memoryShortfall(
   vtkMultiProcessController* controller, const ptm::ComplexPiece& piece, double maximumVolume)
 {
-  const int K = piece.complex.subdomainCount;
   const int ranks = ptm::rankCount(controller);
   std::vector<double> rankVolume(ranks, 0.0);
-  for (int s = 0; s < K; ++s)
+  for (int s = 0; s < piece.complex.subdomainCount; ++s)
   {
     if (piece.subdomainRank[s] >= 0 && piece.subdomainRank[s] < ranks)
     {
       rankVolume[piece.subdomainRank[s]] += piece.subdomainVolume[s];
     }
   }
-  const std::vector<long long> machine =
-    ptm::allGatherValues(controller, std::vector<long long>{ ptm::machineIdentity() });
-  const std::vector<long long> memory = ptm::allGatherValues(
-    controller, std::vector<long long>{ static_cast<long long>(ptm::physicalMemoryBytes()) });
-  std::map<long long, std::vector<int>> ranksOfMachine;
-  for (int r = 0; r < static_cast<int>(machine.size()); ++r)
-  {
-    ranksOfMachine[machine[r]].push_back(r);
-  }
-  for (const auto& [id, onIt] : ranksOfMachine)
-  {
-    double tetrahedra = 0, bytes = 0, available = 0;
-    for (int r : onIt)
-    {
-      const ptm::TetMeshEstimate estimate = ptm::estimateTetMesh(rankVolume[r], maximumVolume);
-      tetrahedra += estimate.tetrahedra;
-      bytes += estimate.bytes;
-      const double reported = static_cast<double>(memory[r]);
-      available = available > 0 && reported > 0 ? std::min(available, reported) : reported;
-    }
-    if (available > 0 && bytes > available)
-    {
-      std::ostringstream why;
-      why.precision(3);
-      why << "the requested size (MaximumVolume " << maximumVolume << ") would give about "
-          << tetrahedra << " tetrahedra on the " << onIt.size() << " rank" << (onIt.size() > 1 ? "s" : "")
-          << " of one machine (rank";
-      for (std::size_t k = 0; k < onIt.size() && k < 8; ++k)
-      {
-        why << (k ? ", " : " ") << onIt[k];
-      }
-      why << (onIt.size() > 8 ? ", ..." : "") << "), about " << bytes / 1e9 << " GB, more than its "
-          << available / 1e9 << " GB of memory; use a larger size or more machines";
-      return why.str();
-    }
-  }
-  return {};
+  std::ostringstream requested;
+  requested.precision(3);
+  requested << "MaximumVolume " << maximumVolume;
+  return ptm::memoryShortfall(controller, rankVolume, maximumVolume, requested.str());
 }
 
 // One subdomain refined (when asked) and meshed.

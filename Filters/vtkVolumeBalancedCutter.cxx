@@ -2,12 +2,14 @@
 
 #include "CADFaceIds.h"
 #include "LocalThickness.h"
+#include "MemoryCheck.h"
 #include "PipelineRequests.h"
 #include "PolyDataConversion.h"
 #include "PropertyChecks.h"
 #include "RankCollectives.h"
 #include "PredictedCost.h"
 #include "SizeField.h"
+#include "SizeFunction.h"
 #include "StageRun.h"
 #include "SubdomainAssignment.h"
 #include "SurfaceComplexArrays.h"
@@ -283,6 +285,24 @@ bool checkedInput(ptm::StageRun& run, const ptm::TriangleSurface& surface, const
   return !run.FailedAnywhere(error);
 }
 
+// Why the tetrahedra MaximumSize asks for cannot fit in the machines'
+// memory, or nothing, before any cut (MemoryCheck.h): the volume is shared
+// evenly among the ranks, as the cuts will share it, and the size caps a
+// size field, so the real mesh is no smaller. Nothing without a size.
+std::string meshTooLarge(vtkMultiProcessController* controller, double maximumSize, double volume)
+{
+  if (!(maximumSize > 0))
+  {
+    return {};
+  }
+  const int ranks = ptm::rankCount(controller);
+  std::ostringstream requested;
+  requested.precision(3);
+  requested << "MaximumSize " << maximumSize;
+  return ptm::memoryShortfall(controller, std::vector<double>(ranks, std::fabs(volume) / ranks),
+    ptm::regularTetrahedronVolume(maximumSize), requested.str());
+}
+
 // The whole surface's thickness samples on every rank: each rank casts the
 // rays of its block (rayBlockSamples), a failure is agreed, and the blocks
 // are gathered in rank order. False when a rank failed (run reports it).
@@ -396,7 +416,8 @@ int vtkVolumeBalancedCutter::RequestData(
   run.Step(0.04, "Checking the surface");
   ptm::DecompositionOptions options = decompositionOptions(this, ptm::rankCount(controller), size);
   ptm::PreparedSurface prepared;
-  if (!checkedInput(run, surface, options.inputCheck, prepared))
+  if (!checkedInput(run, surface, options.inputCheck, prepared) ||
+    run.FailedAnywhere(meshTooLarge(controller, this->MaximumSize, prepared.enclosedVolume)))
   {
     return run.Failure();
   }

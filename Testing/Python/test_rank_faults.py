@@ -10,7 +10,8 @@ complete. Run with 2 ranks (also passes with 1):
    end (on the last rank) fails in ParallelTetMesher;
 2. an abort asked on the last rank only, in the middle of ParallelTetMesher;
    the next update (without the abort) meshes normally;
-3. impossible requests: a size whose mesh would not fit in memory, and
+3. impossible requests: a size whose mesh would not fit in memory (asked of
+   the mesher, and of the cutter, which refuses it before cutting), and
    nonsense property values.
 A hang fails the test by CTest's timeout; every case prints its time.
 """
@@ -120,6 +121,14 @@ def main():
     proxies[-1].MaximumVolume = 1e-13
     expect_failure("a mesh that cannot fit in memory", proxies, "would give about")
     proxies[-1].MaximumVolume = 0
+    # the same for the cutter's size, refused before any cut (without that
+    # check this pipeline, whose mesher sizes itself, meshed the ball in
+    # 19 s and said nothing; tetmesh.py, which gives every stage the size,
+    # spent minutes on the bracket's interfaces at --size 0.001)
+    proxies[1].MaximumSize = 1e-4
+    text = expect_failure("a size that cannot fit in memory", proxies, "the requested size (MaximumSize 0.0001)")
+    assert "VolumeBalancedCutter failed" in text, text
+    proxies[1].MaximumSize = 0
     proxies[-1].RadiusEdgeRatio = 0.5
     expect_failure("RadiusEdgeRatio 0.5", proxies, "ParallelTetMesher: RadiusEdgeRatio must lie in [1, 100], not 0.5")
     proxies[-1].RadiusEdgeRatio = 2

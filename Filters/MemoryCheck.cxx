@@ -1,0 +1,52 @@
+#include "MemoryCheck.h"
+
+#include "RankCollectives.h"
+#include "TetGenSubdomainMesher.h"
+
+#include <algorithm>
+#include <map>
+#include <sstream>
+
+namespace ptm
+{
+std::string memoryShortfall(vtkMultiProcessController* controller, const std::vector<double>& rankVolume,
+  double maximumVolume, const std::string& requested)
+{
+  const std::vector<long long> machine = allGatherValues(controller, std::vector<long long>{ machineIdentity() });
+  const std::vector<long long> memory =
+    allGatherValues(controller, std::vector<long long>{ static_cast<long long>(physicalMemoryBytes()) });
+  std::map<long long, std::vector<int>> ranksOfMachine;
+  for (int r = 0; r < static_cast<int>(machine.size()); ++r)
+  {
+    ranksOfMachine[machine[r]].push_back(r);
+  }
+  for (const auto& [id, onIt] : ranksOfMachine)
+  {
+    double tetrahedra = 0, bytes = 0, available = 0;
+    for (int r : onIt)
+    {
+      const double volume = r < static_cast<int>(rankVolume.size()) ? rankVolume[r] : 0.0;
+      const TetMeshEstimate estimate = estimateTetMesh(volume, maximumVolume);
+      tetrahedra += estimate.tetrahedra;
+      bytes += estimate.bytes;
+      const double reported = static_cast<double>(memory[r]);
+      available = available > 0 && reported > 0 ? std::min(available, reported) : reported;
+    }
+    if (available > 0 && bytes > available)
+    {
+      std::ostringstream why;
+      why.precision(3);
+      why << "the requested size (" << requested << ") would give about " << tetrahedra << " tetrahedra on the "
+          << onIt.size() << " rank" << (onIt.size() > 1 ? "s" : "") << " of one machine (rank";
+      for (std::size_t k = 0; k < onIt.size() && k < 8; ++k)
+      {
+        why << (k ? ", " : " ") << onIt[k];
+      }
+      why << (onIt.size() > 8 ? ", ..." : "") << "), about " << bytes / 1e9 << " GB, more than its "
+          << available / 1e9 << " GB of memory; use a larger size or more machines";
+      return why.str();
+    }
+  }
+  return {};
+}
+} // namespace ptm
