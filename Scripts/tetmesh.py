@@ -310,8 +310,10 @@ def recut_if_stages_fail(run, errors, times, cutter, stages, strategy, most_recu
             if attempts is None:
                 attempts = recut_attempts(cutter, strategy)[:max(most_recuts, 0)]
             # only what a cut can cause: a failure naming a subdomain or an
-            # interface (not, say, a size that cannot fit in memory)
-            if len(failed) == len(attempts) or not re.search(r"subdomain|interface", str(failure), re.I):
+            # interface (not, say, a size that cannot fit in memory, whose
+            # message begins "the requested size")
+            if len(failed) == len(attempts) or not re.search(r"subdomain|interface", str(failure), re.I) \
+                    or "the requested size" in str(failure):
                 raise
             change, description = attempts[len(failed)]
             failed.append({"failure": str(failure), "change": description, "settings": change})

@@ -11,8 +11,8 @@ complete. Run with 2 ranks (also passes with 1):
 2. an abort asked on the last rank only, in the middle of ParallelTetMesher;
    the next update (without the abort) meshes normally;
 3. impossible requests: a size whose mesh would not fit in memory (asked of
-   the mesher, and of the cutter, which refuses it before cutting), and
-   nonsense property values.
+   the mesher, and of the cutter, which refuses it before cutting), an
+   interface edge length far too short, and nonsense property values.
 A hang fails the test by CTest's timeout; every case prints its time.
 """
 import os
@@ -129,6 +129,12 @@ def main():
     text = expect_failure("a size that cannot fit in memory", proxies, "the requested size (MaximumSize 0.0001)")
     assert "VolumeBalancedCutter failed" in text, text
     proxies[1].MaximumSize = 0
+    # and the triangulator's edge length, where an interface would need more
+    # points than one may get (without the check: minutes, then edges
+    # longer than asked)
+    proxies[2].MaximumEdgeLength = 1e-4
+    expect_failure("an interface edge far too short", proxies, "the requested size (MaximumEdgeLength 0.0001)")
+    proxies[2].MaximumEdgeLength = 0
     proxies[-1].RadiusEdgeRatio = 0.5
     expect_failure("RadiusEdgeRatio 0.5", proxies, "ParallelTetMesher: RadiusEdgeRatio must lie in [1, 100], not 0.5")
     proxies[-1].RadiusEdgeRatio = 2

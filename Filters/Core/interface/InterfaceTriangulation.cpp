@@ -637,7 +637,7 @@ void InterfaceMesher::prepareRefinement()
   meanSpacing /= static_cast<double>(region.edges.size());
   largestSize = 1.5 * meanSpacing;
   // The cap on new points. From the smallest size at the boundary alone
-  // (50 area / size^2, at most 2e7) it let a fuzzed part cut across a slit
+  // (50 area / size^2, at most kMostNewPointsPerRegion) it let a fuzzed part cut across a slit
   // 1e-9 wide and 0.5 long refine for minutes (Release; a fuzzer timeout
   // under the sanitizers, session 35): a slit needs about length / width
   // points for the angle bound. A graded refinement needs far fewer: about
@@ -646,11 +646,11 @@ void InterfaceMesher::prepareRefinement()
   // is also at most 50 area / target^2 or 4 n^2, whichever is more, plus
   // 20 n + 1000 (the meshes of the seven corpus and bundled runs compared
   // that session were unchanged).
-  cap = static_cast<std::size_t>(std::min(2e7, 50.0 * area / (smallestSize * smallestSize) + 20.0 * n + 100));
+  cap = static_cast<std::size_t>(std::min(kMostNewPointsPerRegion, 50.0 * area / (smallestSize * smallestSize) + 20.0 * n + 100));
   const double target = options.maximumEdgeLength > 0 ? options.maximumEdgeLength : largestSize;
   const double points = static_cast<double>(n);
   const double graded = std::max(50.0 * area / (target * target), 4.0 * points * points);
-  cap = std::min(cap, static_cast<std::size_t>(std::min(2e7, graded + 20.0 * points + 1000)));
+  cap = std::min(cap, static_cast<std::size_t>(std::min(kMostNewPointsPerRegion, graded + 20.0 * points + 1000)));
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
   {
     consider(f);

@@ -30,6 +30,13 @@
 
 namespace ptm
 {
+// The most new points one region gets (InterfaceMesher's cap): beyond it
+// refinement stops short of the size asked. A region of area A at a
+// maximum edge length h gets about 2.5 A / h^2 of them (the unit ball's
+// disc at h = 0.01 and 0.02), so the filter refuses a length whose
+// estimate 2 A / h^2 is over this before triangulating.
+constexpr double kMostNewPointsPerRegion = 2e7;
+
 struct PlanarRegion
 {
   Vec3 origin;                            // a point of the plane
