@@ -9,8 +9,8 @@
 
 namespace ptm
 {
-std::string memoryShortfall(vtkMultiProcessController* controller, const std::vector<double>& rankVolume,
-  double maximumVolume, const std::string& requested)
+std::string memoryShortfall(vtkMultiProcessController* controller, const std::vector<double>& rankRegular,
+  const std::string& requested, bool lowerBound)
 {
   const std::vector<long long> machine = allGatherValues(controller, std::vector<long long>{ machineIdentity() });
   const std::vector<long long> memory =
@@ -25,8 +25,8 @@ std::string memoryShortfall(vtkMultiProcessController* controller, const std::ve
     double tetrahedra = 0, bytes = 0, available = 0;
     for (int r : onIt)
     {
-      const double volume = r < static_cast<int>(rankVolume.size()) ? rankVolume[r] : 0.0;
-      const TetMeshEstimate estimate = estimateTetMesh(volume, maximumVolume);
+      const TetMeshEstimate estimate =
+        estimateTetMeshOfRegular(r < static_cast<int>(rankRegular.size()) ? rankRegular[r] : 0.0);
       tetrahedra += estimate.tetrahedra;
       bytes += estimate.bytes;
       const double reported = static_cast<double>(memory[r]);
@@ -36,13 +36,14 @@ std::string memoryShortfall(vtkMultiProcessController* controller, const std::ve
     {
       std::ostringstream why;
       why.precision(3);
-      why << "the requested size (" << requested << ") would give about " << tetrahedra << " tetrahedra on the "
+      const char* howMany = lowerBound ? "at least " : "about ";
+      why << "the requested size (" << requested << ") would give " << howMany << tetrahedra << " tetrahedra on the "
           << onIt.size() << " rank" << (onIt.size() > 1 ? "s" : "") << " of one machine (rank";
       for (std::size_t k = 0; k < onIt.size() && k < 8; ++k)
       {
         why << (k ? ", " : " ") << onIt[k];
       }
-      why << (onIt.size() > 8 ? ", ..." : "") << "), about " << bytes / 1e9 << " GB, more than its "
+      why << (onIt.size() > 8 ? ", ..." : "") << "), " << howMany << bytes / 1e9 << " GB, more than its "
           << available / 1e9 << " GB of memory; use a larger size or more machines";
       return why.str();
     }

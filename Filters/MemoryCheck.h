@@ -5,7 +5,9 @@
 // evenly, so a size typed ten times too small is refused within seconds
 // (the bracket at --size 0.001 ran its interface triangulations for over
 // two minutes before; at 0.01 the mesher refused it after 13.7 s of
-// surface stages); the mesher asks it again with each rank's subdomains.
+// surface stages), and again after the cuts with the tetrahedra predicted
+// for each rank (which counts a size field); the mesher asks it once more
+// with each rank's subdomains.
 // Collective: every rank must call it, in the same order.
 #include <string>
 #include <vector>
@@ -14,14 +16,18 @@ class vtkMultiProcessController;
 
 namespace ptm
 {
-// Why meshes of rankVolume[r] on rank r, at most maximumVolume per
-// tetrahedron (TetGen's -a), cannot fit, or nothing: the estimated meshes
-// (estimateTetMesh) of the ranks that share a machine against that
-// machine's physical memory. The same answer on every rank (all of it is
-// gathered). `requested` names the size in the message ("MaximumVolume
-// 1.2e-07"); the message names no subdomain or interface, so tetmesh.py
-// does not cut again for it.
-std::string memoryShortfall(vtkMultiProcessController* controller, const std::vector<double>& rankVolume,
-  double maximumVolume, const std::string& requested);
+// Why meshes of rankRegular[r] regular tetrahedra of the size on rank r
+// (the volume over TetGen's -a bound, or a size field's
+// PredictedCost::regularTetrahedra) cannot fit, or nothing: the estimated
+// meshes (estimateTetMeshOfRegular) of the ranks that share a machine
+// against that machine's physical memory. The same answer on every rank
+// (all of it is gathered). `requested` names the size in the message
+// ("MaximumVolume 1.2e-07"); the message begins "the requested size" and
+// names no subdomain, so tetmesh.py does not cut again for it.
+// With `lowerBound` the counts are only a floor (a size field's prediction
+// floors the size at 1e-3 of the diagonal: PredictedCost.cpp) and the
+// message says "at least" instead of "about".
+std::string memoryShortfall(vtkMultiProcessController* controller, const std::vector<double>& rankRegular,
+  const std::string& requested, bool lowerBound = false);
 } // namespace ptm
 #endif

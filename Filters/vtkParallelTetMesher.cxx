@@ -59,18 +59,18 @@ std::string memoryShortfall(
   vtkMultiProcessController* controller, const ptm::ComplexPiece& piece, double maximumVolume)
 {
   const int ranks = ptm::rankCount(controller);
-  std::vector<double> rankVolume(ranks, 0.0);
+  std::vector<double> rankRegular(ranks, 0.0);
   for (int s = 0; s < piece.complex.subdomainCount; ++s)
   {
-    if (piece.subdomainRank[s] >= 0 && piece.subdomainRank[s] < ranks)
+    if (piece.subdomainRank[s] >= 0 && piece.subdomainRank[s] < ranks && maximumVolume > 0)
     {
-      rankVolume[piece.subdomainRank[s]] += piece.subdomainVolume[s];
+      rankRegular[piece.subdomainRank[s]] += piece.subdomainVolume[s] / maximumVolume;
     }
   }
   std::ostringstream requested;
   requested.precision(3);
   requested << "MaximumVolume " << maximumVolume;
-  return ptm::memoryShortfall(controller, rankVolume, maximumVolume, requested.str());
+  return ptm::memoryShortfall(controller, rankRegular, requested.str());
 }
 
 // One subdomain refined (when asked) and meshed.

@@ -50,15 +50,15 @@ namespace
 // volume until session 22: on 10 real surfaces at K = 16 on 2 ranks the
 // largest rank had 1.02-1.82 x the mean tetrahedra (1.26 on average).
 bool predictedCosts(const ptm::DecompositionResult& result, const ptm::SizeField& field, double maximumSize,
-  const ptm::SizeFunction& thicknessCap, std::vector<double>& predicted, std::string& error)
+  const ptm::SizeFunction& thicknessCap, ptm::PredictedCost& predicted, std::string& error)
 {
-  predicted.clear();
+  predicted = {};
   const double cap = maximumSize > 0 ? maximumSize : result.inputMeanEdgeLength;
   if (!field)
   {
     if (cap > 0)
     {
-      predicted = ptm::predictUniformCost(result.complex, cap, thicknessCap).tetrahedra;
+      predicted = ptm::predictUniformCost(result.complex, cap, thicknessCap);
     }
     return true;
   }
@@ -67,7 +67,7 @@ bool predictedCosts(const ptm::DecompositionResult& result, const ptm::SizeField
   {
     return false;
   }
-  predicted = ptm::predictCost(result.complex, ptm::cappedSize(field.size, cap)).tetrahedra;
+  predicted = ptm::predictCost(result.complex, ptm::cappedSize(field.size, cap));
   return true;
 }
 
@@ -299,8 +299,49 @@ std::string meshTooLarge(vtkMultiProcessController* controller, double maximumSi
   std::ostringstream requested;
   requested.precision(3);
   requested << "MaximumSize " << maximumSize;
-  return ptm::memoryShortfall(controller, std::vector<double>(ranks, std::fabs(volume) / ranks),
-    ptm::regularTetrahedronVolume(maximumSize), requested.str());
+  const double regular = std::fabs(volume) / ranks / ptm::regularTetrahedronVolume(maximumSize);
+  return ptm::memoryShortfall(controller, std::vector<double>(ranks, regular), requested.str());
+}
+
+// The same after the cuts, from the regular tetrahedra predicted for each
+// rank's subdomains: this counts a size field (SizeExpression or
+// SizeArray, capped at MaximumSize), which the size alone does not (a
+// field of 0.001 on the unit ball went on to the interfaces and the
+// mesher). Nothing where no cost was predicted.
+std::string predictedMeshTooLarge(vtkMultiProcessController* controller, const ptm::PredictedCost& cost,
+  const std::vector<int>& subdomainRank, const std::string& expression, const std::string& array,
+  double maximumSize)
+{
+  const int ranks = ptm::rankCount(controller);
+  std::vector<double> rankRegular(ranks, 0.0);
+  for (std::size_t s = 0; s < cost.regularTetrahedra.size() && s < subdomainRank.size(); ++s)
+  {
+    if (subdomainRank[s] >= 0 && subdomainRank[s] < ranks)
+    {
+      rankRegular[subdomainRank[s]] += cost.regularTetrahedra[s];
+    }
+  }
+  std::ostringstream requested;
+  requested.precision(3);
+  if (!expression.empty() || !array.empty())
+  {
+    requested << (expression.empty() ? "SizeArray '" + array : "SizeExpression '" + expression) << "'";
+    if (maximumSize > 0)
+    {
+      requested << " capped at MaximumSize " << maximumSize;
+    }
+  }
+  else if (maximumSize > 0)
+  {
+    requested << "MaximumSize " << maximumSize;
+  }
+  else
+  {
+    requested << "the automatic size, the input's mean edge";
+  }
+  // a field is floored at 1e-3 of the diagonal in the prediction
+  const bool field = !expression.empty() || !array.empty();
+  return ptm::memoryShortfall(controller, rankRegular, requested.str(), field);
 }
 
 // The whole surface's thickness samples on every rank: each rank casts the
@@ -472,12 +513,20 @@ int vtkVolumeBalancedCutter::RequestData(
     threw = true;
   }
   finishSharedCutChecks(controller, threw);
-  std::vector<double> predicted;
+  ptm::PredictedCost cost;
   if (localError.empty())
   {
-    predictedCosts(result, size, this->MaximumSize, options.costThicknessCap, predicted, localError);
+    predictedCosts(result, size, this->MaximumSize, options.costThicknessCap, cost, localError);
   }
   if (run.FailedAnywhere(localError))
+  {
+    return run.Failure();
+  }
+  const std::vector<double>& predicted = cost.tetrahedra;
+  const std::vector<int> subdomainRank =
+    ptm::assignSubdomainsToRanks(predicted.empty() ? result.subdomainMeasure : predicted, ptm::rankCount(controller));
+  if (run.FailedAnywhere(predictedMeshTooLarge(controller, cost, subdomainRank, this->SizeExpression,
+        this->SizeArray, this->MaximumSize)))
   {
     return run.Failure();
   }
@@ -507,8 +556,7 @@ int vtkVolumeBalancedCutter::RequestData(
   ptm::ComplexPiece piece;
   piece.subdomainVolume = result.subdomainVolume;
   piece.subdomainMeasure = result.subdomainMeasure;
-  piece.subdomainRank =
-    ptm::assignSubdomainsToRanks(predicted.empty() ? result.subdomainMeasure : predicted, ptm::rankCount(controller));
+  piece.subdomainRank = subdomainRank;
   piece.globalPointCount = static_cast<ptm::Index>(result.complex.points.size());
   piece.inputMeanEdgeLength = result.inputMeanEdgeLength;
   piece.complex = std::move(result.complex);

@@ -129,6 +129,14 @@ def main():
     text = expect_failure("a size that cannot fit in memory", proxies, "the requested size (MaximumSize 0.0001)")
     assert "VolumeBalancedCutter failed" in text, text
     proxies[1].MaximumSize = 0
+    # a size field is checked after the cuts, from the predicted tetrahedra
+    # (the cutter's field is the one the mesher is to use; this pipeline's
+    # mesher has none and, without the check, meshed at its own size;
+    # tetmesh.py --size-expression 0.001, which gives every stage the
+    # field, ran into the interface triangulations for minutes)
+    proxies[1].SizeExpression = "0.001"
+    expect_failure("a size field that cannot fit", proxies, "the requested size (SizeExpression '0.001') would give at least")
+    proxies[1].SizeExpression = ""
     # and the triangulator's edge length, where an interface would need more
     # points than one may get (without the check: minutes, then edges
     # longer than asked)

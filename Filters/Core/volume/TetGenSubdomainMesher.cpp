@@ -1247,10 +1247,15 @@ TetMeshingResult meshClosedSurface(const TriangleSurface& s, const TetMeshingOpt
 }
 TetMeshEstimate estimateTetMesh(double volume, double maximumVolume)
 {
+  return volume > 0 && maximumVolume > 0 ? estimateTetMeshOfRegular(volume / maximumVolume) : TetMeshEstimate{};
+}
+
+TetMeshEstimate estimateTetMeshOfRegular(double regularTetrahedra)
+{
   TetMeshEstimate e;
-  if (volume > 0 && maximumVolume > 0)
+  if (regularTetrahedra > 0)
   {
-    e.tetrahedra = 2.0 * volume / maximumVolume;
+    e.tetrahedra = 2.0 * regularTetrahedra;
     e.bytes = 220.0 * e.tetrahedra;
   }
   return e;

@@ -176,6 +176,9 @@ struct TetMeshEstimate
   double bytes = 0;
 };
 TetMeshEstimate estimateTetMesh(double volume, double maximumVolume);
+// The same from the regular tetrahedra of the size (volume / maximumVolume,
+// or PredictedCost::regularTetrahedra under a size field).
+TetMeshEstimate estimateTetMeshOfRegular(double regularTetrahedra);
 
 // Physical memory of this machine in bytes (0 if unknown).
 double physicalMemoryBytes();
