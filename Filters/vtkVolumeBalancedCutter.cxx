@@ -344,6 +344,20 @@ std::string predictedMeshTooLarge(vtkMultiProcessController* controller, const p
   return ptm::memoryShortfall(controller, rankRegular, requested.str(), field);
 }
 
+// The complex of the cut as the next stage reads it, its subdomains
+// assigned to ranks; the result's complex is moved out.
+ptm::ComplexPiece cutPiece(ptm::DecompositionResult& result, const std::vector<int>& subdomainRank)
+{
+  ptm::ComplexPiece piece;
+  piece.subdomainVolume = result.subdomainVolume;
+  piece.subdomainMeasure = result.subdomainMeasure;
+  piece.subdomainRank = subdomainRank;
+  piece.globalPointCount = static_cast<ptm::Index>(result.complex.points.size());
+  piece.inputMeanEdgeLength = result.inputMeanEdgeLength;
+  piece.complex = std::move(result.complex);
+  return piece;
+}
+
 // The whole surface's thickness samples on every rank: each rank casts the
 // rays of its block (rayBlockSamples), a failure is agreed, and the blocks
 // are gathered in rank order. False when a rank failed (run reports it).
@@ -553,14 +567,7 @@ int vtkVolumeBalancedCutter::RequestData(
   }
 
   run.Step(0.8, "Writing the complex");
-  ptm::ComplexPiece piece;
-  piece.subdomainVolume = result.subdomainVolume;
-  piece.subdomainMeasure = result.subdomainMeasure;
-  piece.subdomainRank = subdomainRank;
-  piece.globalPointCount = static_cast<ptm::Index>(result.complex.points.size());
-  piece.inputMeanEdgeLength = result.inputMeanEdgeLength;
-  piece.complex = std::move(result.complex);
-  ptm::writeOwnedFaces(piece, run.Rank(), output);
+  ptm::writeOwnedFaces(cutPiece(result, subdomainRank), run.Rank(), output);
   vtkFieldData* fd = output->GetFieldData();
   addCutterFacts(fd, result, ptm::toString(options.criterion));
   if (!predicted.empty())
