@@ -71,7 +71,7 @@ void runStages(tetgenmesh& m, tetgenbehavior& b, tetgenio& in, tetgenio* addin)
     {
       m.constraineddelaunay(phase);
     }
-    m.carveholes(); // prints "Removing exterior tetrahedra" (pastBoundaryRecovery)
+    m.carveholes(); // prints "Removing exterior tetrahedra" (tetgenPhase, TetGenWatch.h)
     if (b.nobisect && m.subvertstack->objects > 0)
     {
       m.suppresssteinerpoints();

@@ -178,26 +178,6 @@ struct TimeLimits
   }
 };
 
-// What TetGen printed of its phases in a run's log (a temporary file its
-// process writes its standard output to, unbuffered, so a run the kernel
-// stops keeps every line): whether the run got past boundary recovery.
-// TetGen 1.5 prints "Removing exterior tetrahedra ..." right after
-// "Recovering boundaries...", then "Refining mesh...".
-bool pastBoundaryRecovery(std::FILE* log)
-{
-  if (!log || std::fseek(log, 0, SEEK_SET) != 0)
-  {
-    return false;
-  }
-  std::string text;
-  char buffer[4096];
-  for (std::size_t got; (got = std::fread(buffer, 1, sizeof(buffer), log)) > 0;)
-  {
-    text.append(buffer, got);
-  }
-  return text.find("Removing exterior tetrahedra") != std::string::npos;
-}
-
 constexpr const char* kBudgetSpent = "no TetGen run was started: the processor-time budget is spent";
 
 // Waits for the TetGen process `pid` to end; its wait status, and the
@@ -254,7 +234,7 @@ bool runTetGenIsolated(tetgenio& in, const std::string& switches, TimeLimits& li
     const double used = reapChild(process.pid, ignored);
     limits.spent += used;
     limits.stopped += waited == TetGenWait::WallLimit ? 1 : 0;
-    limits.stoppedAfterRecovery = pastBoundaryRecovery(phases.get());
+    limits.stoppedAfterRecovery = tetgenPhase(phases.get()) == TetGenPhase::AfterRecovery;
     std::ostringstream msg;
     if (waited == TetGenWait::StalledInRecovery)
     {
@@ -291,7 +271,7 @@ bool runTetGenIsolated(tetgenio& in, const std::string& switches, TimeLimits& li
     if (WIFSIGNALED(waitStatus) && WTERMSIG(waitStatus) == SIGXCPU)
     {
       ++limits.stopped;
-      limits.stoppedAfterRecovery = pastBoundaryRecovery(phases.get());
+      limits.stoppedAfterRecovery = tetgenPhase(phases.get()) == TetGenPhase::AfterRecovery;
       std::ostringstream msg;
       msg << "TetGen used more than " << std::ceil(cpuSeconds) << " s of processor time and was stopped "
           << (limits.stoppedAfterRecovery

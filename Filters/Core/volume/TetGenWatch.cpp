@@ -50,31 +50,6 @@ double processorSeconds(pid_t pid)
   return user < 0 || system < 0 || ticks <= 0 ? -1.0 : (user + system) / static_cast<double>(ticks);
 }
 
-// Where TetGen is, from its phase lines so far.
-enum class Phase
-{
-  BeforeRecovery,
-  InRecovery,
-  AfterRecovery
-};
-
-Phase phaseOf(std::FILE* phases)
-{
-  std::string text;
-  char buffer[4096];
-  const int fd = ::fileno(phases);
-  off_t at = 0;
-  for (ssize_t got; (got = ::pread(fd, buffer, sizeof(buffer), at)) > 0; at += got)
-  {
-    text.append(buffer, static_cast<std::size_t>(got));
-  }
-  if (text.find("Removing exterior tetrahedra") != std::string::npos)
-  {
-    return Phase::AfterRecovery;
-  }
-  return text.find("Recovering boundaries") != std::string::npos ? Phase::InRecovery : Phase::BeforeRecovery;
-}
-
 // Follows one run's phases and processor time; true once it counts as
 // stalled in boundary recovery (RecoveryWatch).
 class RecoveryTimer
@@ -94,14 +69,14 @@ public:
     {
       return false;
     }
-    const Phase phase = phaseOf(this->Phases);
+    const TetGenPhase phase = tetgenPhase(this->Phases);
     const double used = processorSeconds(this->Pid);
-    if (phase == Phase::AfterRecovery || used < 0)
+    if (phase == TetGenPhase::AfterRecovery || used < 0)
     {
       this->Done = true; // past recovery, or nothing to measure by
       return false;
     }
-    if (phase == Phase::BeforeRecovery)
+    if (phase == TetGenPhase::BeforeRecovery)
     {
       return false;
     }
@@ -122,6 +97,28 @@ private:
   bool Done = false;
 };
 } // namespace
+
+TetGenPhase tetgenPhase(std::FILE* phases)
+{
+  if (!phases)
+  {
+    return TetGenPhase::BeforeRecovery;
+  }
+  std::string text;
+  char buffer[4096];
+  const int fd = ::fileno(phases);
+  off_t at = 0;
+  for (ssize_t got; (got = ::pread(fd, buffer, sizeof(buffer), at)) > 0; at += got)
+  {
+    text.append(buffer, static_cast<std::size_t>(got));
+  }
+  if (text.find("Removing exterior tetrahedra") != std::string::npos)
+  {
+    return TetGenPhase::AfterRecovery;
+  }
+  return text.find("Recovering boundaries") != std::string::npos ? TetGenPhase::InRecovery
+                                                                : TetGenPhase::BeforeRecovery;
+}
 
 TetGenWait waitForTetGen(const TetGenProcess& process, std::FILE* phases, double wallSeconds,
   const RecoveryWatch& watch)

@@ -43,6 +43,20 @@ struct RecoveryWatch
   double floorSeconds = 0.5; // never less than this in recovery
 };
 
+// Where a run is, from the phase lines TetGen has written to `phases` so
+// far (a temporary file its process writes its standard output to,
+// unbuffered, so a run the kernel stops keeps every line; read with pread,
+// so the offset stays): TetGen 1.5 prints "Recovering boundaries..." when
+// boundary recovery starts and "Removing exterior tetrahedra ..." right
+// after it, then "Refining mesh...". Null: BeforeRecovery.
+enum class TetGenPhase
+{
+  BeforeRecovery,
+  InRecovery,
+  AfterRecovery
+};
+TetGenPhase tetgenPhase(std::FILE* phases);
+
 enum class TetGenWait
 {
   Ready,             // the result (or the end of the stream) is there to read
