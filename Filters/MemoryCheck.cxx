@@ -9,6 +9,20 @@
 
 namespace ptm
 {
+std::vector<double> regularPerRank(
+  const std::vector<double>& subdomainRegular, const std::vector<int>& subdomainRank, int ranks)
+{
+  std::vector<double> perRank(static_cast<std::size_t>(std::max(ranks, 0)), 0.0);
+  for (std::size_t s = 0; s < subdomainRegular.size() && s < subdomainRank.size(); ++s)
+  {
+    if (subdomainRank[s] >= 0 && subdomainRank[s] < ranks)
+    {
+      perRank[subdomainRank[s]] += subdomainRegular[s];
+    }
+  }
+  return perRank;
+}
+
 std::string memoryShortfall(vtkMultiProcessController* controller, const std::vector<double>& rankRegular,
   const std::string& requested, bool lowerBound)
 {

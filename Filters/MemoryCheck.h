@@ -29,5 +29,10 @@ namespace ptm
 // message says "at least" instead of "about".
 std::string memoryShortfall(vtkMultiProcessController* controller, const std::vector<double>& rankRegular,
   const std::string& requested, bool lowerBound = false);
+
+// The regular tetrahedra of each of `ranks` ranks: those of the subdomains
+// assigned to it (subdomainRank, as the cutter writes it) summed.
+std::vector<double> regularPerRank(
+  const std::vector<double>& subdomainRegular, const std::vector<int>& subdomainRank, int ranks);
 } // namespace ptm
 #endif

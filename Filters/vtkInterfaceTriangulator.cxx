@@ -544,12 +544,13 @@ std::string edgeLengthTooSmall(const ptm::ComplexPiece& piece, double h)
   double largestArea = 0;
   for (const ptm::InterfaceRegion& region : piece.complex.interfaces)
   {
-    const std::vector<ptm::Index> points = ptm::regionPoints(region);
-    if (points.empty())
+    if (region.edges.empty())
     {
       continue;
     }
-    const double area = ptm::norm(ptm::vectorArea(piece.complex.points, region.edges, piece.complex.points[points[0]]));
+    // about a point of its own, where vectorArea is accurate
+    const ptm::Vec3& about = piece.complex.points[region.edges[0][0]];
+    const double area = ptm::norm(ptm::vectorArea(piece.complex.points, region.edges, about));
     if (area > largestArea)
     {
       largestArea = area;

@@ -58,19 +58,16 @@ namespace
 std::string memoryShortfall(
   vtkMultiProcessController* controller, const ptm::ComplexPiece& piece, double maximumVolume)
 {
-  const int ranks = ptm::rankCount(controller);
-  std::vector<double> rankRegular(ranks, 0.0);
-  for (int s = 0; s < piece.complex.subdomainCount; ++s)
+  std::vector<double> regular; // of each subdomain
+  for (double volume : piece.subdomainVolume)
   {
-    if (piece.subdomainRank[s] >= 0 && piece.subdomainRank[s] < ranks && maximumVolume > 0)
-    {
-      rankRegular[piece.subdomainRank[s]] += piece.subdomainVolume[s] / maximumVolume;
-    }
+    regular.push_back(maximumVolume > 0 ? volume / maximumVolume : 0.0);
   }
   std::ostringstream requested;
   requested.precision(3);
   requested << "MaximumVolume " << maximumVolume;
-  return ptm::memoryShortfall(controller, rankRegular, requested.str());
+  return ptm::memoryShortfall(controller,
+    ptm::regularPerRank(regular, piece.subdomainRank, ptm::rankCount(controller)), requested.str());
 }
 
 // One subdomain refined (when asked) and meshed.

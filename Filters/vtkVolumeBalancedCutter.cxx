@@ -312,18 +312,10 @@ std::string predictedMeshTooLarge(vtkMultiProcessController* controller, const p
   const std::vector<int>& subdomainRank, const std::string& expression, const std::string& array,
   double maximumSize)
 {
-  const int ranks = ptm::rankCount(controller);
-  std::vector<double> rankRegular(ranks, 0.0);
-  for (std::size_t s = 0; s < cost.regularTetrahedra.size() && s < subdomainRank.size(); ++s)
-  {
-    if (subdomainRank[s] >= 0 && subdomainRank[s] < ranks)
-    {
-      rankRegular[subdomainRank[s]] += cost.regularTetrahedra[s];
-    }
-  }
+  const bool field = !expression.empty() || !array.empty();
   std::ostringstream requested;
   requested.precision(3);
-  if (!expression.empty() || !array.empty())
+  if (field)
   {
     requested << (expression.empty() ? "SizeArray '" + array : "SizeExpression '" + expression) << "'";
     if (maximumSize > 0)
@@ -340,8 +332,8 @@ std::string predictedMeshTooLarge(vtkMultiProcessController* controller, const p
     requested << "the automatic size, the input's mean edge";
   }
   // a field is floored at 1e-3 of the diagonal in the prediction
-  const bool field = !expression.empty() || !array.empty();
-  return ptm::memoryShortfall(controller, rankRegular, requested.str(), field);
+  return ptm::memoryShortfall(controller,
+    ptm::regularPerRank(cost.regularTetrahedra, subdomainRank, ptm::rankCount(controller)), requested.str(), field);
 }
 
 // The complex of the cut as the next stage reads it, its subdomains
