@@ -221,6 +221,30 @@ TEST(SelfIntersectionCheck, SoupsThatAreNotOrientedMeshesAreStillChecked)
   EXPECT_TRUE(finned.intersects) << "CGAL splits the fin's edge, after which the fin touches the sphere there";
 }
 
+// A closed surface folded onto itself at an edge, in one plane to
+// round-off, crosses itself although CGAL's exact predicates see four
+// points off one plane (the aneurysm's subdomain 26 at K = 64, 2e-15): a
+// tetrahedron 1e-13 high. One 1e-6 high is a thin wedge, not a fold.
+TEST(SelfIntersectionCheck, FoldsInOnePlaneToRoundOffCount)
+{
+  auto tetrahedron = [](double height) {
+    TriangleSurface t;
+    t.points = { { 0, 0, 0 }, { 1, 0, 0 }, { 0.5, 1, 0 }, { 0.5, 0.5, height } };
+    t.triangles = { { 0, 2, 1 }, { 0, 1, 3 }, { 1, 2, 3 }, { 2, 0, 3 } };
+    return t;
+  };
+  const SelfIntersectionReport flat = checkSelfIntersection(tetrahedron(1e-13));
+  ASSERT_TRUE(flat.checked) << flat.note;
+  EXPECT_TRUE(flat.intersects);
+  EXPECT_EQ(flat.folds, 1u);
+  const SelfIntersectionReport patch = checkSelfIntersection(tetrahedron(1e-13), { 2 });
+  EXPECT_TRUE(patch.intersects) << "the fold at each edge of triangle 2";
+  const SelfIntersectionReport thin = checkSelfIntersection(tetrahedron(1e-6));
+  ASSERT_TRUE(thin.checked) << thin.note;
+  EXPECT_FALSE(thin.intersects);
+  EXPECT_EQ(thin.folds, 0u);
+}
+
 TEST(SurfaceInputCheck, FlippedTrianglesAndInsideOutSphereAreRepaired)
 {
   TriangleSurface ball = flipped(icosphere({ 0, 0, 0 }, 1.0, 2));

@@ -2,7 +2,10 @@
 #define PTM_SELF_INTERSECTION_CHECK_H
 // Whether a closed triangle surface intersects itself, with CGAL's exact
 // predicates (Polygon_mesh_processing::does_self_intersect). Two triangles
-// that meet only along their shared edge or corner do not count.
+// that meet only along their shared edge or corner do not count, unless
+// they fold onto each other there: in one plane to round-off, on the same
+// side of the edge (a wedge or slit of no thickness, which CGAL counts only
+// when exactly coplanar).
 #include "TriangleSurface.h"
 
 #include <string>
@@ -19,6 +22,7 @@ struct SelfIntersectionReport
   Index firstTriangle = -1;    // one pair, for the message
   Index secondTriangle = -1;
   std::vector<std::pair<Index, Index>> crossings; // every pair found (up to `limit`)
+  std::size_t folds = 0;       // of the pairs, those folded at a shared edge
   std::string note;            // why it could not be checked
 };
 

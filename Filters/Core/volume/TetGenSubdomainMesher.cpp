@@ -387,7 +387,8 @@ std::string selfIntersectionError(const TriangleSurface& s)
     const Vec3& near = s.points[s.triangles[crossing.firstTriangle][0]];
     std::ostringstream msg;
     msg << "the surface intersects itself: its triangles " << crossing.firstTriangle << " and "
-        << crossing.secondTriangle << " cross near (" << near[0] << ", " << near[1] << ", "
+        << crossing.secondTriangle << (crossing.folds ? " fold onto each other at their shared edge" : " cross")
+        << " near (" << near[0] << ", " << near[1] << ", "
         << near[2] << "); TetGen cannot mesh it (unless the input itself crosses, the cut made this: "
         << "another number of subdomains or the other strategy cuts it differently)";
     return msg.str();
