@@ -12,7 +12,6 @@
 #include <cmath>
 #include <cstdint>
 #include <iterator>
-#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -160,52 +159,45 @@ std::vector<std::pair<Index, Index>> foldedPairs(
 {
   const std::unordered_set<Index> listed(among.begin(), among.end());
   const std::uint64_t n = s.points.size();
-  std::unordered_map<std::uint64_t, Index> firstOn; // edge lo n + hi -> its first triangle
-  std::unordered_map<std::uint64_t, int> uses;
-  std::vector<std::pair<std::uint64_t, std::pair<Index, Index>>> edgePairs;
+  struct Side
+  {
+    std::uint64_t edge; // lo n + hi
+    Index triangle;
+    Index third;        // its corner off the edge
+    bool operator<(const Side& o) const { return edge != o.edge ? edge < o.edge : triangle < o.triangle; }
+  };
+  std::vector<Side> sides; // sorted rather than hashed: one pass over a large surface
+  sides.reserve(3 * s.triangles.size());
   for (std::size_t t = 0; t < s.triangles.size(); ++t)
   {
     for (int k = 0; k < 3; ++k)
     {
       const Index a = s.triangles[t][k], b = s.triangles[t][(k + 1) % 3];
-      const std::uint64_t key = static_cast<std::uint64_t>(std::min(a, b)) * n + static_cast<std::uint64_t>(std::max(a, b));
-      if (++uses[key] == 1)
-      {
-        firstOn.emplace(key, static_cast<Index>(t));
-      }
-      else
-      {
-        edgePairs.push_back({ key, { firstOn[key], static_cast<Index>(t) } });
-      }
+      sides.push_back({ static_cast<std::uint64_t>(std::min(a, b)) * n + static_cast<std::uint64_t>(std::max(a, b)),
+        static_cast<Index>(t), s.triangles[t][(k + 2) % 3] });
     }
   }
-  auto third = [&](Index t, Index a, Index b) {
-    for (Index v : s.triangles[t])
-    {
-      if (v != a && v != b)
-      {
-        return v;
-      }
-    }
-    return a;
-  };
+  std::sort(sides.begin(), sides.end());
   std::vector<std::pair<Index, Index>> found;
-  for (const auto& [key, pair] : edgePairs)
+  for (std::size_t i = 0; i < sides.size() && found.size() < limit;)
   {
-    const auto [f, g] = pair;
-    if (uses[key] != 2 || (!listed.empty() && !listed.count(f) && !listed.count(g)))
+    std::size_t j = i + 1;
+    while (j < sides.size() && sides[j].edge == sides[i].edge)
     {
-      continue; // an edge of more triangles is not a manifold surface's, checked by CGAL's orientation
+      ++j;
     }
-    const Index a = static_cast<Index>(key / n), b = static_cast<Index>(key % n);
-    if (folded(s.points[a], s.points[b], s.points[third(f, a, b)], s.points[third(g, a, b)]))
+    // an edge of more triangles is not a manifold surface's, which CGAL's orientation handles
+    const Side& f = sides[i];
+    const Side& g = sides[i + 1 < sides.size() ? i + 1 : i];
+    if (j - i == 2 && (listed.empty() || listed.count(f.triangle) || listed.count(g.triangle)))
     {
-      found.emplace_back(f, g);
-      if (found.size() >= limit)
+      const Index a = static_cast<Index>(f.edge / n), b = static_cast<Index>(f.edge % n);
+      if (folded(s.points[a], s.points[b], s.points[f.third], s.points[g.third]))
       {
-        break;
+        found.emplace_back(f.triangle, g.triangle);
       }
     }
+    i = j;
   }
   return found;
 }
