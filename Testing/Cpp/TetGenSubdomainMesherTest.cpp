@@ -770,6 +770,10 @@ TEST(TetGenSubdomainMesher, SplittableTrianglesMayBeSplitOthersNot)
   const SelfIntersectionReport fold = checkSelfIntersection(surface);
   EXPECT_EQ(fold.folds, 1u);
   EXPECT_EQ(fold.firstTriangle + fold.secondTriangle, 11);
+  const TetMeshingResult refused = meshClosedSurface(surface, options);
+  EXPECT_FALSE(refused.ok);
+  EXPECT_NE(refused.error.find("fold onto each other at their shared edge"), std::string::npos) << refused.error;
+  EXPECT_NE(refused.error.find("flat tetrahedron"), std::string::npos) << refused.error;
   options.surfaceKnownValid = true;
 
   // kept exactly unless told otherwise: refused, naming the boundary

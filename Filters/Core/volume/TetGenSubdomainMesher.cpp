@@ -388,8 +388,9 @@ std::string selfIntersectionError(const TriangleSurface& s)
     std::ostringstream msg;
     msg << "the surface intersects itself: its triangles " << crossing.firstTriangle << " and "
         << crossing.secondTriangle << (crossing.folds ? " fold onto each other at their shared edge" : " cross")
-        << " near (" << near[0] << ", " << near[1] << ", "
-        << near[2] << "); TetGen cannot mesh it (unless the input itself crosses, the cut made this: "
+        << " near (" << near[0] << ", " << near[1] << ", " << near[2] << "); "
+        << (crossing.folds ? "TetGen would fill the fold with a flat tetrahedron" : "TetGen cannot mesh it")
+        << " (unless the input itself crosses, the cut made this: "
         << "another number of subdomains or the other strategy cuts it differently)";
     return msg.str();
   }
