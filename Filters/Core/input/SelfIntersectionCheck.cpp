@@ -46,25 +46,22 @@ bool splitAtAny(const std::vector<std::vector<std::size_t>>& before,
   return false;
 }
 
-// Whether the triangles already form an oriented manifold mesh (boundary
-// allowed), as CGAL's is_polygon_soup_a_polygon_mesh decides, from one sort
-// of the half-edges instead of its ordered edge set and per-vertex walks:
-// that test took 56 % of every check, 1.1 s per rank on the 10 M ball at
-// K = 2 (perf). No corner repeated in a triangle, no half-edge twice, and
-// the corners at every point joined across shared edges into one fan. True
-// means CGAL would say so too; false sends the soup to CGAL's own test.
-bool isOrientedManifold(const TriangleSurface& s)
+// A side of a triangle, as the edge it runs along.
+struct HalfEdge
 {
-  struct HalfEdge
+  Index lo, hi;
+  bool forward;       // runs from lo to hi
+  std::size_t corner; // 3 t + c: corner c of triangle t, where the half-edge starts
+  bool operator<(const HalfEdge& o) const
   {
-    Index lo, hi;
-    bool forward;       // runs from lo to hi
-    std::size_t corner; // 3 t + c: corner c of triangle t, where the half-edge starts
-    bool operator<(const HalfEdge& o) const
-    {
-      return lo != o.lo ? lo < o.lo : hi != o.hi ? hi < o.hi : forward < o.forward;
-    }
-  };
+    return lo != o.lo ? lo < o.lo : hi != o.hi ? hi < o.hi : forward < o.forward;
+  }
+};
+
+// Every triangle's half-edges, sorted by edge (the sides of one edge
+// adjacent) and direction.
+std::vector<HalfEdge> sortedHalfEdges(const TriangleSurface& s)
+{
   std::vector<HalfEdge> halves;
   halves.reserve(3 * s.triangles.size());
   for (std::size_t t = 0; t < s.triangles.size(); ++t)
@@ -72,23 +69,42 @@ bool isOrientedManifold(const TriangleSurface& s)
     for (int c = 0; c < 3; ++c)
     {
       const Index a = s.triangles[t][c], b = s.triangles[t][(c + 1) % 3];
-      if (a == b)
-      {
-        return false;
-      }
       halves.push_back({ std::min(a, b), std::max(a, b), a < b, 3 * t + c });
     }
   }
   std::sort(halves.begin(), halves.end());
+  return halves;
+}
+
+// The end of the run of half-edges of the edge halves[i] is on.
+std::size_t endOfEdge(const std::vector<HalfEdge>& halves, std::size_t i)
+{
+  std::size_t j = i + 1;
+  while (j < halves.size() && halves[j].lo == halves[i].lo && halves[j].hi == halves[i].hi)
+  {
+    ++j;
+  }
+  return j;
+}
+
+// Whether the triangles already form an oriented manifold mesh (boundary
+// allowed), as CGAL's is_polygon_soup_a_polygon_mesh decides, from one sort
+// of the half-edges instead of its ordered edge set and per-vertex walks:
+// that test took 56 % of every check, 1.1 s per rank on the 10 M ball at
+// K = 2 (perf). No corner repeated in a triangle, no half-edge twice, and
+// the corners at every point joined across shared edges into one fan. True
+// means CGAL would say so too; false sends the soup to CGAL's own test.
+bool isOrientedManifold(const TriangleSurface& s, const std::vector<HalfEdge>& halves)
+{
+  if (std::any_of(halves.begin(), halves.end(), [](const HalfEdge& h) { return h.lo == h.hi; }))
+  {
+    return false;
+  }
   UnionFind corners(halves.size());
   auto next = [](std::size_t corner) { return corner - corner % 3 + (corner % 3 + 1) % 3; };
   for (std::size_t i = 0; i < halves.size();)
   {
-    std::size_t j = i + 1;
-    while (j < halves.size() && halves[j].lo == halves[i].lo && halves[j].hi == halves[i].hi)
-    {
-      ++j;
-    }
+    const std::size_t j = endOfEdge(halves, i);
     if (j - i > 2 || (j - i == 2 && halves[i].forward == halves[i + 1].forward))
     {
       return false; // an edge of three triangles, or two running the same way
@@ -154,47 +170,23 @@ bool folded(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
 // no thickness that TetGen fills with a flat tetrahedron (DOLFIN's aneurysm
 // at K = 64, bisection: two interfaces of subdomain 26 in one plane to
 // 2e-15, a tetrahedron of volume 1.4e-17 and dihedral 0.00 degrees).
-std::vector<std::pair<Index, Index>> foldedPairs(
-  const TriangleSurface& s, const std::vector<Index>& among, std::size_t limit)
+std::vector<std::pair<Index, Index>> foldedPairs(const TriangleSurface& s, const std::vector<HalfEdge>& halves,
+  const std::vector<Index>& among, std::size_t limit)
 {
   const std::unordered_set<Index> listed(among.begin(), among.end());
-  const std::uint64_t n = s.points.size();
-  struct Side
-  {
-    std::uint64_t edge; // lo n + hi
-    Index triangle;
-    Index third;        // its corner off the edge
-    bool operator<(const Side& o) const { return edge != o.edge ? edge < o.edge : triangle < o.triangle; }
-  };
-  std::vector<Side> sides; // sorted rather than hashed: one pass over a large surface
-  sides.reserve(3 * s.triangles.size());
-  for (std::size_t t = 0; t < s.triangles.size(); ++t)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      const Index a = s.triangles[t][k], b = s.triangles[t][(k + 1) % 3];
-      sides.push_back({ static_cast<std::uint64_t>(std::min(a, b)) * n + static_cast<std::uint64_t>(std::max(a, b)),
-        static_cast<Index>(t), s.triangles[t][(k + 2) % 3] });
-    }
-  }
-  std::sort(sides.begin(), sides.end());
+  auto third = [&](const HalfEdge& h) { return s.points[s.triangles[h.corner / 3][(h.corner % 3 + 2) % 3]]; };
   std::vector<std::pair<Index, Index>> found;
-  for (std::size_t i = 0; i < sides.size() && found.size() < limit;)
+  for (std::size_t i = 0; i < halves.size() && found.size() < limit;)
   {
-    std::size_t j = i + 1;
-    while (j < sides.size() && sides[j].edge == sides[i].edge)
-    {
-      ++j;
-    }
+    const std::size_t j = endOfEdge(halves, i);
     // an edge of more triangles is not a manifold surface's, which CGAL's orientation handles
-    const Side& f = sides[i];
-    const Side& g = sides[i + 1 < sides.size() ? i + 1 : i];
-    if (j - i == 2 && (listed.empty() || listed.count(f.triangle) || listed.count(g.triangle)))
+    if (j - i == 2)
     {
-      const Index a = static_cast<Index>(f.edge / n), b = static_cast<Index>(f.edge % n);
-      if (folded(s.points[a], s.points[b], s.points[f.third], s.points[g.third]))
+      const Index f = static_cast<Index>(halves[i].corner / 3), g = static_cast<Index>(halves[i + 1].corner / 3);
+      if ((listed.empty() || listed.count(f) || listed.count(g)) &&
+        folded(s.points[halves[i].lo], s.points[halves[i].hi], third(halves[i]), third(halves[i + 1])))
       {
-        found.emplace_back(f.triangle, g.triangle);
+        found.emplace_back(f, g);
       }
     }
     i = j;
@@ -223,7 +215,8 @@ SelfIntersectionReport checkSoup(
       static_cast<std::size_t>(t[2]) });
   }
   // the soup's faces keep their order in the mesh, so face i is triangle i
-  if (!isOrientedManifold(s) && !PMP::is_polygon_soup_a_polygon_mesh(polygons))
+  const std::vector<HalfEdge> halves = sortedHalfEdges(s); // for both tests of the soup's edges
+  if (!isOrientedManifold(s, halves) && !PMP::is_polygon_soup_a_polygon_mesh(polygons))
   {
     const std::vector<std::vector<std::size_t>> before = patch ? polygons : std::vector<std::vector<std::size_t>>();
     PMP::orient_polygon_soup(points, polygons); // duplicates non-manifold points
@@ -285,7 +278,7 @@ SelfIntersectionReport checkSoup(
   }
   if (pairs.empty())
   {
-    for (const auto& [f, g] : foldedPairs(s, among, std::max<std::size_t>(limit, 1)))
+    for (const auto& [f, g] : foldedPairs(s, halves, among, std::max<std::size_t>(limit, 1)))
     {
       pairs.emplace_back(Mesh::Face_index(static_cast<Mesh::size_type>(f)),
         Mesh::Face_index(static_cast<Mesh::size_type>(g)));
