@@ -1149,3 +1149,32 @@ TEST(PlaneClearance, PointsThatMustClearCountOnThePlane)
   EXPECT_DOUBLE_EQ(keepOff.at(0.5), 0.5);
   EXPECT_NE(keepOff.clearestOffset(0.6, 1.4, 1.0, 0.5), 1.0);
 }
+
+// A part whose volume measure puts the balanced plane at the part's end (a
+// fraction strictly between 0 and 1 never can): OpenFOAM's flange at K = 64
+// by bisection, cut by predicted cost with the inertia axes as they are,
+// failed saying the subdomains were too many. The trials now start from the
+// part's middle and bisect on the real split, as for a measure with no
+// guide at all.
+TEST(VolumeBalancedDecomposition, AMeasureSolvedToThePartsEndIsNoGuide)
+{
+  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/openfoam_flange.off");
+  ASSERT_TRUE(file.ok) << file.error;
+  DecompositionOptions options;
+  options.numberOfSubdomains = 64;
+  options.strategy = CutStrategy::RecursiveBisection;
+  options.direction = CutDirection::Inertia;
+  options.criterion = BalanceCriterion::PredictedCost;
+  options.costMaximumSize = 0.0016450716943988051;
+  const DecompositionResult r = decomposeVolumeBalanced(file.data.surface, options);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_EQ(r.complex.subdomainCount, 64);
+  double parts = 0;
+  for (double v : r.subdomainVolume)
+  {
+    EXPECT_GT(v, 0.0);
+    parts += v;
+  }
+  const double whole = enclosedVolume(file.data.surface);
+  EXPECT_LE(std::fabs(parts - whole), 1e-9 * whole) << parts << " against " << whole;
+}
