@@ -149,6 +149,19 @@ TriangleSurface wallPrism(int n, double r, double h)
   }
   return s;
 }
+
+// The subdomains of a decomposition of `whole` add up to its volume (1e-9).
+void expectSubdomainsAddUp(const DecompositionResult& r, const TriangleSurface& whole)
+{
+  double parts = 0;
+  for (double v : r.subdomainVolume)
+  {
+    EXPECT_GT(v, 0.0);
+    parts += v;
+  }
+  const double volume = enclosedVolume(whole);
+  EXPECT_LE(std::fabs(parts - volume), 1e-9 * volume) << parts << " against " << volume;
+}
 } // namespace
 
 class DecompositionCases : public ::testing::TestWithParam<std::tuple<int, CutStrategy>>
@@ -201,13 +214,7 @@ TEST(VolumeBalancedDecomposition, ACutThatFailsRemovingFlatCrossingsIsMadeKeepin
   const DecompositionResult r = decomposeVolumeBalanced(file.data.surface, options);
   ASSERT_TRUE(r.ok) << r.error;
   EXPECT_EQ(r.complex.subdomainCount, 37);
-  double parts = 0;
-  for (double v : r.subdomainVolume)
-  {
-    parts += v;
-  }
-  const double whole = enclosedVolume(file.data.surface);
-  EXPECT_LE(std::fabs(parts - whole), 1e-9 * whole) << parts << " against " << whole;
+  expectSubdomainsAddUp(r, file.data.surface);
   const bool keptThem = std::any_of(r.warnings.begin(), r.warnings.end(),
     [](const std::string& w) { return w.find("cut again keeping them") != std::string::npos; });
   std::cout << "[ figure ] SOD-70 K=37 ParallelPlanes: " << (keptThem ? "cut again keeping the flat crossings" : "cut at once")
@@ -1169,12 +1176,5 @@ TEST(VolumeBalancedDecomposition, AMeasureSolvedToThePartsEndIsNoGuide)
   const DecompositionResult r = decomposeVolumeBalanced(file.data.surface, options);
   ASSERT_TRUE(r.ok) << r.error;
   EXPECT_EQ(r.complex.subdomainCount, 64);
-  double parts = 0;
-  for (double v : r.subdomainVolume)
-  {
-    EXPECT_GT(v, 0.0);
-    parts += v;
-  }
-  const double whole = enclosedVolume(file.data.surface);
-  EXPECT_LE(std::fabs(parts - whole), 1e-9 * whole) << parts << " against " << whole;
+  expectSubdomainsAddUp(r, file.data.surface);
 }
