@@ -814,17 +814,17 @@ Vec3 PartCut::clearerNormal(const Vec3& normal, const NearlyContinuedLine& conti
 
 // The balanced cut with normal n: the offset from the measure function,
 // corrected by Newton steps on the real split, with snapping reduced
-// when it keeps the balance out of reach. No trial at all if the
-// measure puts the plane outside the part (tooThin). A measure whose
-// total is not positive is no guide (OpenFOAM's bullet at K = 40 by
-// bisection: -1.4e-8 along the normal of its 33rd cut, for a part made
-// with +2.2e-8; every such run failed, saying the subdomains were too
-// many): the trials then start from the middle of the part and the
-// bisection on the real split below finds the plane. So does a guide that
-// lands on an end of the part, which no fraction between 0 and 1 can do:
-// OpenFOAM's flange at K = 64 by bisection (PredictedCost, session 44)
-// had its 53rd part's measure solved at 0.258 to its top, and the run
-// failed the same way.
+// when it keeps the balance out of reach. No trial at all if the part
+// has no extent along n (tooThin). A measure whose total is not positive
+// is no guide (OpenFOAM's bullet at K = 40 by bisection: -1.4e-8 along the
+// normal of its 33rd cut, for a part made with +2.2e-8; every such run
+// failed, saying the subdomains were too many): the trials then start
+// from the middle of the part and the bisection on the real split below
+// finds the plane. So does a guide that lands on an end of the part,
+// which no fraction between 0 and 1 can do: OpenFOAM's flange at K = 64
+// by bisection (PredictedCost, session 44) had the measure of the part
+// its 53rd cut split solve the fraction 0.258 to the part's top, and the
+// run failed the same way.
 Trial PartCut::balancedCut(const Vec3& n, double& at, bool& tooThin)
 {
   const HalfSpaceMeasure measure(c, cell, n, options.criterion);
