@@ -162,6 +162,28 @@ void expectSubdomainsAddUp(const DecompositionResult& r, const TriangleSurface& 
   const double volume = enclosedVolume(whole);
   EXPECT_LE(std::fabs(parts - volume), 1e-9 * volume) << parts << " against " << volume;
 }
+
+// A file of Data/regression cut as tetmesh.py cuts it (inertia axes, by the
+// cost predicted for `size`), expected to give K subdomains that add up to it.
+DecompositionResult cutRegressionFileByCost(const std::string& name, int K, CutStrategy strategy, double size)
+{
+  const OffReadResult file = readOffFile(std::string(PTM_DATA_DIR "/regression/") + name);
+  EXPECT_TRUE(file.ok) << file.error;
+  DecompositionOptions options;
+  options.numberOfSubdomains = K;
+  options.strategy = strategy;
+  options.direction = CutDirection::Inertia;
+  options.criterion = BalanceCriterion::PredictedCost;
+  options.costMaximumSize = size;
+  DecompositionResult r = decomposeVolumeBalanced(file.data.surface, options);
+  EXPECT_TRUE(r.ok) << name << ": " << r.error;
+  if (r.ok)
+  {
+    EXPECT_EQ(r.complex.subdomainCount, K);
+    expectSubdomainsAddUp(r, file.data.surface);
+  }
+  return r;
+}
 } // namespace
 
 class DecompositionCases : public ::testing::TestWithParam<std::tuple<int, CutStrategy>>
@@ -203,18 +225,9 @@ TEST(VolumeBalancedDecomposition, AxisDirectionsAndLongestExtent)
 // them, says so, and the subdomains still add up to the input (session 32).
 TEST(VolumeBalancedDecomposition, ACutThatFailsRemovingFlatCrossingsIsMadeKeepingThem)
 {
-  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/kicad_sod70.off");
-  ASSERT_TRUE(file.ok) << file.error;
-  DecompositionOptions options;
-  options.numberOfSubdomains = 37;
-  options.strategy = CutStrategy::ParallelPlanes;
-  options.direction = CutDirection::Inertia;
-  options.criterion = BalanceCriterion::PredictedCost;
-  options.costMaximumSize = 0.26176408961727343;
-  const DecompositionResult r = decomposeVolumeBalanced(file.data.surface, options);
-  ASSERT_TRUE(r.ok) << r.error;
-  EXPECT_EQ(r.complex.subdomainCount, 37);
-  expectSubdomainsAddUp(r, file.data.surface);
+  const DecompositionResult r =
+    cutRegressionFileByCost("kicad_sod70.off", 37, CutStrategy::ParallelPlanes, 0.26176408961727343);
+  ASSERT_TRUE(r.ok);
   const bool keptThem = std::any_of(r.warnings.begin(), r.warnings.end(),
     [](const std::string& w) { return w.find("cut again keeping them") != std::string::npos; });
   std::cout << "[ figure ] SOD-70 K=37 ParallelPlanes: " << (keptThem ? "cut again keeping the flat crossings" : "cut at once")
@@ -1165,16 +1178,6 @@ TEST(PlaneClearance, PointsThatMustClearCountOnThePlane)
 // guide at all.
 TEST(VolumeBalancedDecomposition, AMeasureSolvedToThePartsEndIsNoGuide)
 {
-  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/openfoam_flange.off");
-  ASSERT_TRUE(file.ok) << file.error;
-  DecompositionOptions options;
-  options.numberOfSubdomains = 64;
-  options.strategy = CutStrategy::RecursiveBisection;
-  options.direction = CutDirection::Inertia;
-  options.criterion = BalanceCriterion::PredictedCost;
-  options.costMaximumSize = 0.0016450716943988051;
-  const DecompositionResult r = decomposeVolumeBalanced(file.data.surface, options);
-  ASSERT_TRUE(r.ok) << r.error;
-  EXPECT_EQ(r.complex.subdomainCount, 64);
-  expectSubdomainsAddUp(r, file.data.surface);
+  EXPECT_TRUE(
+    cutRegressionFileByCost("openfoam_flange.off", 64, CutStrategy::RecursiveBisection, 0.0016450716943988051).ok);
 }
