@@ -1172,8 +1172,8 @@ TEST(PlaneClearance, PointsThatMustClearCountOnThePlane)
 
 // A part whose volume measure puts the balanced plane at the part's end (a
 // fraction strictly between 0 and 1 never can): OpenFOAM's flange at K = 64
-// by bisection, cut by predicted cost with the inertia axes as they are,
-// failed saying the subdomains were too many. The trials now start from the
+// by bisection, cut by predicted cost along the inertia axes, failed
+// saying the subdomains were too many. The trials now start from the
 // part's middle and bisect on the real split, as for a measure with no
 // guide at all.
 TEST(VolumeBalancedDecomposition, AMeasureSolvedToThePartsEndIsNoGuide)
