@@ -1181,3 +1181,20 @@ TEST(VolumeBalancedDecomposition, AMeasureSolvedToThePartsEndIsNoGuide)
   EXPECT_TRUE(
     cutRegressionFileByCost("openfoam_flange.off", 64, CutStrategy::RecursiveBisection, 0.0016450716943988051).ok);
 }
+
+// A snapped vertex a hair across the plane from all its faces (over
+// round-off, under a thousandth of its shortest edge), under the new
+// interface: TetGen's example (a block with a closed cavity) at K = 64 with
+// parallel planes, cut by predicted cost. Plane 6 runs 1.06 degrees off the
+// cavity's floor and passed 4.8e-4 over its corners at y = 1.5; snapped,
+// they took the whole floor above, under the interface, and subdomain 7
+// crossed itself (12 pairs of triangles; tetmesh.py meshed it only by
+// recursive bisection after 12-31 s of failed attempts). The plane now moves
+// past such a vertex.
+TEST(VolumeBalancedDecomposition, AHairlinePokeUnderTheInterfaceMovesThePlane)
+{
+  const DecompositionResult r =
+    cutRegressionFileByCost("tetgen_example_cavity.off", 64, CutStrategy::ParallelPlanes, 0.1646);
+  ASSERT_TRUE(r.ok);
+  EXPECT_EQ(crossingSubdomains(r), 0);
+}

@@ -204,6 +204,10 @@ struct CellSplit
   std::unordered_map<Index, double> splitEdgeLength{}; // crossing point -> length of its edge
   std::vector<Index> keptPokes{}; // snapped vertices left poking through the plane (unsnapPokingVertices)
   std::vector<std::pair<Index, int>> touchingTips{}; // vertices on the plane, all neighbours on one side (that side)
+  // snapped vertices a hair off the plane (over round-off, under
+  // kLeastOffPlane of their shortest edge) whose neighbours all lie across
+  // it, with that side (unsnapPokingVertices)
+  std::vector<std::pair<Index, int>> hairlinePokes{};
 
   void collectFaces();
   // Calls f(a, b, regionEdge) for every edge of the part's triangles
@@ -345,9 +349,16 @@ void CellSplit::classifyVertices()
 // listed in keptPokes: where its cap is a bump, the plane beside the
 // vertex lies outside the part and no interface is there; where the cap is
 // the tip of a dent, the new interface covers it and the cap crosses it
-// (pokeUnderInterface). A vertex within a thousandth
-// of its shortest edge lies on the plane up to round-off (4e-16 to 2e-14 of
-// its edge where cuts run through earlier lines) and always stays snapped.
+// (pokeUnderInterface). A vertex within a thousandth of its shortest edge
+// always stays snapped: cut off, its cap would be thinner still. Over
+// round-off (kOnPlaneFraction; 4e-16 to 2e-14 of its edge are seen where
+// cuts run through earlier lines) it is listed in hairlinePokes, for the
+// caller to move the plane past it where it lies under the new interface.
+// TetGen's example (a block with a closed cavity) at K = 64 with parallel
+// planes: the cavity's floor corners at y = 1.5 lay 4.8e-4 (0.95e-3 of their
+// shortest edge) under a plane 1.06 degrees off the floor, every neighbour
+// above; snapped, the whole floor went above, 4.8e-4 under the interface
+// that covered it, and subdomain 7 crossed itself in 12 pairs of triangles.
 void CellSplit::unsnapPokingVertices()
 {
   constexpr double kLeastCapFraction = 0.01;
@@ -378,8 +389,16 @@ void CellSplit::unsnapPokingVertices()
   {
     VertexSide& info = vertices.at(v);
     const double d = std::fabs(info.distance);
-    if (seen.ownSide || seen.farthestAcross < 0 || d < kLeastOffPlane * info.shortestEdge)
+    if (seen.ownSide || seen.farthestAcross < 0)
     {
+      continue;
+    }
+    if (d < kLeastOffPlane * info.shortestEdge)
+    {
+      if (d > kOnPlaneFraction * info.shortestEdge)
+      {
+        hairlinePokes.push_back({ v, info.distance < 0 ? 1 : -1 });
+      }
       continue;
     }
     if (d < kLeastCapFraction * (d + seen.farthestAcross))
@@ -940,10 +959,12 @@ bool CellSplit::piecesClosed(const std::vector<InterfaceRegion>& newRegions)
 // those, the first touching tip (findTouchingTips) under the interface is
 // reported with its faces' side (stats.touchingPoint, touchingSide): the
 // surface touches the interface there, and the caller moves the plane off
-// it (femur at K = 48 with parallel planes, subdomain 27).
+// it (femur at K = 48 with parallel planes, subdomain 27). Failing that too,
+// the first hairline poke under it likewise, with its distance
+// (stats.touchingDistance), for the caller to move the plane past it.
 bool CellSplit::pokeUnderInterface()
 {
-  if ((keptPokes.empty() && touchingTips.empty()) || c.interfaces.empty() ||
+  if ((keptPokes.empty() && touchingTips.empty() && hairlinePokes.empty()) || c.interfaces.empty() ||
     c.interfaces.back().planeId != planeId)
   {
     return false;
@@ -968,6 +989,18 @@ bool CellSplit::pokeUnderInterface()
       break;
     }
   }
+  std::sort(hairlinePokes.begin(), hairlinePokes.end());
+  for (auto it = hairlinePokes.begin(); it != hairlinePokes.end() && stats.coveredPokes.empty() &&
+       stats.touchingSide == 0; ++it)
+  {
+    if (covered(it->first))
+    {
+      stats.touchingPoint = it->first;
+      stats.touchingSide = it->second;
+      stats.touchingDistance = std::fabs(vertices.at(it->first).distance);
+      break;
+    }
+  }
   std::sort(stats.coveredPokes.begin(), stats.coveredPokes.end());
   if (stats.coveredPokes.empty() && stats.touchingSide == 0)
   {
@@ -979,6 +1012,11 @@ bool CellSplit::pokeUnderInterface()
     const Index v = stats.coveredPokes.front();
     msg << "cutting plane " << planeId << " left point " << v << " " << std::fabs(vertices.at(v).distance)
         << " across it, under the new interface (the faces at the point cross it)";
+  }
+  else if (stats.touchingDistance > 0)
+  {
+    msg << "cutting plane " << planeId << " passes " << stats.touchingDistance << " beside point "
+        << stats.touchingPoint << ", across from all its faces, under the new interface (they cross it)";
   }
   else
   {

@@ -85,9 +85,13 @@ struct PlaneSplitStats
   // (+1 above, -1 below), under the new interface: the part touches itself
   // there (femur at K = 48, parallel planes: the clearance search put the
   // plane through the tip of a dent). The split fails; the caller moves the
-  // plane a hair away from that side.
+  // plane a hair away from that side. Also a snapped vertex a hair across
+  // the plane from all its faces, over round-off and under a thousandth of
+  // its shortest edge (TetGen's example at K = 64, parallel planes), with
+  // its distance: the caller moves the plane that much further.
   Index touchingPoint = -1;
   int touchingSide = 0;
+  double touchingDistance = 0; // 0 for a vertex on the plane up to round-off
 };
 
 // Returns false with a message if the part's faces do not form a closed

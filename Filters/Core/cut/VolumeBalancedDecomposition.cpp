@@ -678,7 +678,7 @@ Trial PartCut::tryCut(const Vec3& n, double at, double snap)
     {
       at += 1e-3 * result.inputMeanEdgeLength;
     }
-    at -= trial.stats.touchingSide * 1e-3 * result.inputMeanEdgeLength;
+    at -= trial.stats.touchingSide * (1e-3 * result.inputMeanEdgeLength + trial.stats.touchingDistance);
     std::vector<Index>& keep = splitOptions.keepOffPlane;
     keep.insert(keep.end(), trial.stats.pinchedPoints.begin(), trial.stats.pinchedPoints.end());
     keep.insert(keep.end(), trial.stats.coveredPokes.begin(), trial.stats.coveredPokes.end());
