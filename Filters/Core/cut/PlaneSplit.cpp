@@ -411,6 +411,7 @@ void CellSplit::unsnapPokingVertices()
     --stats.snappedPoints;
     ++stats.unsnappedPoints;
   }
+  std::sort(hairlinePokes.begin(), hairlinePokes.end()); // `neighbours` has no order
 }
 
 // A vertex on the plane up to round-off whose neighbours all lie on one
@@ -980,26 +981,22 @@ bool CellSplit::pokeUnderInterface()
       stats.coveredPokes.push_back(v);
     }
   }
-  for (auto it = touchingTips.begin(); it != touchingTips.end() && stats.coveredPokes.empty(); ++it)
-  {
-    if (covered(it->first))
+  // the first covered vertex of `list` as the touching point, with its side
+  auto reportFirstCovered = [&](const std::vector<std::pair<Index, int>>& list) {
+    for (const auto& [v, side] : list)
     {
-      stats.touchingPoint = it->first;
-      stats.touchingSide = it->second;
-      break;
+      if (covered(v))
+      {
+        stats.touchingPoint = v;
+        stats.touchingSide = side;
+        return true;
+      }
     }
-  }
-  std::sort(hairlinePokes.begin(), hairlinePokes.end());
-  for (auto it = hairlinePokes.begin(); it != hairlinePokes.end() && stats.coveredPokes.empty() &&
-       stats.touchingSide == 0; ++it)
+    return false;
+  };
+  if (stats.coveredPokes.empty() && !reportFirstCovered(touchingTips) && reportFirstCovered(hairlinePokes))
   {
-    if (covered(it->first))
-    {
-      stats.touchingPoint = it->first;
-      stats.touchingSide = it->second;
-      stats.touchingDistance = std::fabs(vertices.at(it->first).distance);
-      break;
-    }
+    stats.touchingDistance = std::fabs(vertices.at(stats.touchingPoint).distance);
   }
   std::sort(stats.coveredPokes.begin(), stats.coveredPokes.end());
   if (stats.coveredPokes.empty() && stats.touchingSide == 0)
