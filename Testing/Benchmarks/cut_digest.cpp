@@ -14,7 +14,7 @@
 // counts of planes, points, triangles and interface edges, the cutter's
 // statistics, and digest, an FNV-1a hash of every plane, point coordinate,
 // triangle and its pair and interface edge: equal digests mean the same cut,
-// bit for bit.
+// bit for bit. The cutter's warnings go to standard error.
 #include "Fnv1a.h"
 #include "OffFormat.h"
 #include "VolumeBalancedDecomposition.h"
@@ -93,6 +93,10 @@ int main(int argc, char** argv)
   const auto start = std::chrono::steady_clock::now();
   const ptm::DecompositionResult r = ptm::decomposeVolumeBalanced(file.data.surface, options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  for (const std::string& w : r.warnings)
+  {
+    std::fprintf(stderr, "warning: %s\n", w.c_str());
+  }
   std::size_t edges = 0;
   const std::uint64_t hash = r.ok ? digest(r.complex, edges) : 0;
   std::printf("{\"ok\": %s, \"seconds\": %.4f, \"planes\": %zu, \"points\": %zu, \"triangles\": %zu, "
