@@ -1,4 +1,5 @@
 #include "InterfaceTriangulation.h"
+#include "InterfaceTriangulationCache.h"
 #include "TestSurfaces.h"
 
 #include <gtest/gtest.h>
@@ -162,6 +163,57 @@ TEST(InterfaceTriangulation, CoarseAndFineSquares)
 
 // A size field replaces the automatic sizing: edges grow with it from left
 // to right (0.02 at x = 0 to 0.2 at x = 1), boundary spacing 0.02 all round.
+// The cache gives what triangulateInterface gives, computes a region asked
+// again only once, and takes a region differing by one unit in the last
+// place of one coordinate, or other options, as a new one.
+TEST(InterfaceTriangulationCache, SameInputOnceDifferentInputAgain)
+{
+  PlanarRegion r = plane();
+  addLoop(r, circle(0, 0, 1, 40, true));
+  addLoop(r, circle(0.2, 0, 0.3, 12, false));
+  InterfaceTriangulationCache cache;
+  const auto first = cache.triangulate(r, {});
+  const auto direct = triangulateInterface(r, {});
+  ASSERT_TRUE(first->ok && direct.ok);
+  EXPECT_EQ(first->triangulation.triangles, direct.triangulation.triangles);
+  EXPECT_EQ(first->triangulation.newPoints, direct.triangulation.newPoints);
+  const auto again = cache.triangulate(PlanarRegion(r), {});
+  EXPECT_EQ(again.get(), first.get());
+  EXPECT_EQ(cache.hits(), 1u);
+  EXPECT_EQ(cache.misses(), 1u);
+
+  PlanarRegion moved = r;
+  moved.points[5][0] = std::nextafter(moved.points[5][0], 2.0);
+  const auto other = cache.triangulate(moved, {});
+  EXPECT_NE(other.get(), first.get());
+  InterfaceTriangulationOptions coarse;
+  coarse.minimumAngleDegrees = 10;
+  EXPECT_NE(cache.triangulate(r, coarse).get(), first.get());
+  EXPECT_EQ(cache.misses(), 3u);
+  const auto moreDirect = triangulateInterface(moved, {});
+  EXPECT_EQ(other->triangulation.newPoints, moreDirect.triangulation.newPoints);
+}
+
+// Past its byte limit the cache starts again: results stay right, and the
+// region asked before the drop is computed again.
+TEST(InterfaceTriangulationCache, DropsEverythingPastTheLimit)
+{
+  PlanarRegion r = plane();
+  addLoop(r, square(0, 0, 1, 10, true));
+  PlanarRegion s = plane();
+  addLoop(s, square(0, 0, 2, 10, true));
+  InterfaceTriangulationCache cache(1); // below one entry: nothing is kept
+  const auto a = cache.triangulate(r, {});
+  const auto b = cache.triangulate(r, {});
+  EXPECT_EQ(a->triangulation.triangles, b->triangulation.triangles);
+  EXPECT_EQ(cache.hits(), 0u);
+  InterfaceTriangulationCache roomy;
+  roomy.triangulate(r, {});
+  roomy.triangulate(s, {});
+  roomy.triangulate(r, {});
+  EXPECT_EQ(roomy.hits(), 1u);
+}
+
 TEST(InterfaceTriangulation, SizeFieldSetsTheEdgeLengths)
 {
   PlanarRegion r = plane();

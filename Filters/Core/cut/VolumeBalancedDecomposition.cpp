@@ -3,6 +3,7 @@
 #include "FlatCrossingRemoval.h"
 
 #include "InterfaceTriangulation.h"
+#include "InterfaceTriangulationCache.h"
 #include "SelfIntersectionCheck.h"
 
 #include <algorithm>
@@ -320,11 +321,12 @@ PartRegions regionsOfPart(
 // Appends the triangulation of region k of part `cell` to `part`. False if
 // it cannot be triangulated.
 bool appendRegion(const SurfaceComplex& c, int cell, const PartRegions& r, std::size_t k,
-  const InterfaceTriangulationOptions& options, std::unordered_map<Index, Index>& local,
-  TriangleSurface& part)
+  const InterfaceTriangulationOptions& options, InterfaceTriangulationCache& triangulations,
+  std::unordered_map<Index, Index>& local, TriangleSurface& part)
 {
   const InterfaceRegion& region = *r.regions[k];
-  const InterfaceTriangulationResult tr = triangulateInterface(planarRegionOf(c, region, r.points[k]), options);
+  const auto found = triangulations.triangulate(planarRegionOf(c, region, r.points[k]), options);
+  const InterfaceTriangulationResult& tr = *found;
   if (!tr.ok)
   {
     return false;
@@ -426,7 +428,7 @@ void growZones(const TriangleSurface& surface, const std::unordered_map<Index, s
 // zone are triangulated the least refined way (they only close the
 // surface). False if a region cannot be triangulated.
 bool partSurface(const SurfaceComplex& c, int cell, const PartRegions& r, bool whole,
-  TriangleSurface& part, std::vector<Index>& near)
+  InterfaceTriangulationCache& triangulations, TriangleSurface& part, std::vector<Index>& near)
 {
   InterfaceTriangulationOptions refined;
   refined.smooth = false;
@@ -444,7 +446,7 @@ bool partSurface(const SurfaceComplex& c, int cell, const PartRegions& r, bool w
       if (!appended[k] && inZone(r.boxes[k]))
       {
         appended[k] = 1;
-        if (!appendRegion(c, cell, r, k, refined, local, all))
+        if (!appendRegion(c, cell, r, k, refined, triangulations, local, all))
         {
           return false;
         }
@@ -492,7 +494,7 @@ bool partSurface(const SurfaceComplex& c, int cell, const PartRegions& r, bool w
   cover.maximumEdgeLength = std::numeric_limits<double>::max();
   for (std::size_t k = 0; k < r.regions.size() && whole; ++k)
   {
-    if (!appended[k] && !appendRegion(c, cell, r, k, cover, local, all))
+    if (!appended[k] && !appendRegion(c, cell, r, k, cover, triangulations, local, all))
     {
       return false;
     }
@@ -511,8 +513,8 @@ bool partSurface(const SurfaceComplex& c, int cell, const PartRegions& r, bool w
 // cutter's time grow with K (a ball of 23,592 triangles, K = 64, recursive
 // bisection: 62 % of 8.6 s; the neighbours of a part cut early are whole
 // halves). A region that cannot be triangulated counts as crossing.
-bool partCrossesItself(
-  const SurfaceComplex& c, int cell, const CutZone& cut, int below, int above, Index firstNewPoint)
+bool partCrossesItself(const SurfaceComplex& c, int cell, const CutZone& cut, int below, int above,
+  Index firstNewPoint, InterfaceTriangulationCache& triangulations)
 {
   PartRegions r = regionsOfPart(c, cell, cut, below, above, firstNewPoint);
   if (r.zones.empty() && !r.cutBent)
@@ -527,7 +529,7 @@ bool partCrossesItself(
   r.cut = cut;
   TriangleSurface patch;
   std::vector<Index> near;
-  if (!partSurface(c, cell, r, false, patch, near))
+  if (!partSurface(c, cell, r, false, triangulations, patch, near))
   {
     return true;
   }
@@ -538,7 +540,7 @@ bool partCrossesItself(
   }
   TriangleSurface part;
   near.clear();
-  if (!partSurface(c, cell, r, true, part, near))
+  if (!partSurface(c, cell, r, true, triangulations, part, near))
   {
     return true;
   }
@@ -572,7 +574,8 @@ struct Trial
 struct PartCut
 {
   PartCut(SurfaceComplex& complex, const DecompositionOptions& options, DecompositionResult& result,
-    int cell, double fraction, int parts, int below, int above, double solveTolerance);
+    int cell, double fraction, int parts, int below, int above, double solveTolerance,
+    InterfaceTriangulationCache& triangulations);
   bool run(const Vec3& proposedNormal, std::string& error);
 
   Trial tryCut(const Vec3& n, double at, double snap);
@@ -603,11 +606,12 @@ struct PartCut
   Vec3 centroid{ 0, 0, 0 };   // of the part's points: each plane's origin is put nearest to it
   std::vector<PointSpacing> spacing; // of the part, for PlaneClearance
   std::string lastError;
+  InterfaceTriangulationCache& triangulations; // the decomposition's, for the checks of trials
 };
 
 PartCut::PartCut(SurfaceComplex& complex, const DecompositionOptions& options_,
   DecompositionResult& result_, int cell_, double fraction_, int parts_, int below_, int above_,
-  double solveTolerance_)
+  double solveTolerance_, InterfaceTriangulationCache& triangulations_)
   : c(complex)
   , options(options_)
   , result(result_)
@@ -620,6 +624,7 @@ PartCut::PartCut(SurfaceComplex& complex, const DecompositionOptions& options_,
   , planeId(static_cast<int>(complex.planes.size()))
   , volumeCriterion(options_.criterion == BalanceCriterion::Volume ||
       options_.criterion == BalanceCriterion::PredictedCost)
+  , triangulations(triangulations_)
 {
   const double cellVolume = volumeCriterion ? labelVolume(c, cell) : 0.0;
   target = fraction * cellVolume;
@@ -986,7 +991,8 @@ bool PartCut::anyPartCrosses(const SurfaceComplex& trialComplex, const std::set<
     for (auto it = parts.begin(); it != parts.end() && found == 0; ++it)
     {
       if ((!options.checksPart || options.checksPart(*it)) &&
-        partCrossesItself(trialComplex, *it, cut, below, above, static_cast<Index>(c.points.size())))
+        partCrossesItself(
+          trialComplex, *it, cut, below, above, static_cast<Index>(c.points.size()), triangulations))
       {
         found = 1;
       }
@@ -1254,6 +1260,7 @@ struct Cutting
   DecompositionResult& result;
   const double solveTolerance;
   const Index inputPoints; // the points before the first cut
+  InterfaceTriangulationCache& triangulations; // the trials' interface triangulations, kept across cuts
   int nextCell = 1;
   std::vector<int> leaves{}; // cell ids in subdomain order
   std::string error{};
@@ -1285,7 +1292,7 @@ bool Cutting::cut(int cell, const Vec3& proposedNormal, double fraction, int par
     partOptions.balanceTolerance *=
       std::min({ 1.0, fraction / costFraction, (1.0 - fraction) / (1.0 - costFraction) });
   }
-  PartCut part(c, partOptions, result, cell, fraction, parts, below, above, solveTolerance);
+  PartCut part(c, partOptions, result, cell, fraction, parts, below, above, solveTolerance, triangulations);
   if (!part.run(proposedNormal, error))
   {
     return false;
@@ -1565,7 +1572,8 @@ DecompositionResult decomposeOnce(PreparedSurface prepared, const DecompositionO
   }
   SurfaceComplex& c = result.complex;
   const Index inputPoints = static_cast<Index>(c.points.size());
-  Cutting cutting{ c, options, result, std::min(1e-6, 0.01 * options.balanceTolerance), inputPoints };
+  InterfaceTriangulationCache triangulations;
+  Cutting cutting{ c, options, result, std::min(1e-6, 0.01 * options.balanceTolerance), inputPoints, triangulations };
   if (cutsByCost(options))
   {
     const TriangleSurface whole{ c.points, c.triangles };
