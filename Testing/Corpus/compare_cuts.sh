@@ -9,6 +9,7 @@
 #        [--strategies RecursiveBisection,ParallelPlanes] [--surfaces a,b] [--timeout 300]
 #
 # A build is a build tree holding bin/cut_digest (cmake --build BUILD --target cut_digest).
+# The cutter's warnings (cut_digest's standard error) are not shown.
 set -euo pipefail
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 OLD="$1/bin/cut_digest"; NEW="$2/bin/cut_digest"; shift 2
@@ -36,8 +37,8 @@ same=0; differ=0; failed=0; ratios=()
 for f in "${files[@]}"; do
     for k in ${KS//,/ }; do
         for st in ${STRATEGIES//,/ }; do
-            old=$(timeout "$TIMEOUT" "$OLD" "$f" "$k" "$st" || true)
-            new=$(timeout "$TIMEOUT" "$NEW" "$f" "$k" "$st" || true)
+            old=$(timeout "$TIMEOUT" "$OLD" "$f" "$k" "$st" 2>/dev/null || true)
+            new=$(timeout "$TIMEOUT" "$NEW" "$f" "$k" "$st" 2>/dev/null || true)
             od=$(echo "$old" | field digest); nd=$(echo "$new" | field digest)
             os=$(echo "$old" | field seconds); ns=$(echo "$new" | field seconds)
             if [ -z "$od" ] || [ -z "$nd" ] || [ "$od" = 0000000000000000 ] || [ "$nd" = 0000000000000000 ]; then

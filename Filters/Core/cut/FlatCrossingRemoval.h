@@ -2,8 +2,9 @@
 #define PTM_FLAT_CROSSING_REMOVAL_H
 // Stage 1b: contour points that only mark where a plane crossed an edge
 // inside a planar face, taken out again after the cuts (with parallel
-// planes after every cut, so that they do not pile up on the next planes:
-// VolumeBalancedDecomposition.cpp, Cutting::cut).
+// planes after every cut, so that they do not pile up on the next planes,
+// each time only the points that cut made: VolumeBalancedDecomposition.cpp,
+// Cutting::cut).
 //
 // Why. CAD exports triangulate a planar face with long thin triangles (a
 // cylinder's wall as rectangles cut by one diagonal each). A plane crosses
