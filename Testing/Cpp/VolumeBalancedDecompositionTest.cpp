@@ -1226,3 +1226,24 @@ TEST(VolumeBalancedDecomposition, EachPlaneTakesOutOnlyItsOwnFlatCrossings)
   expectSubdomainsAddUp(r, file.data.surface);
   EXPECT_EQ(crossingSubdomains(r), 0);
 }
+
+// The same part at K = 64 by recursive bisection (the cutter's defaults),
+// which takes the flat crossings out once, after the last cut: that removal
+// left subdomain 19 crossing itself by this file's check, and the four
+// filters with their defaults failed in the mesher ("the surface of
+// subdomain 19 is not closed"), with no recut in the GUI or pvbatch. The
+// removal is now checked and made again keeping subdomain 19's points.
+TEST(VolumeBalancedDecomposition, TakingOutFlatCrossingsAfterBisectionKeepsSubdomainsWhole)
+{
+  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/occt_top.off");
+  ASSERT_TRUE(file.ok) << file.error;
+  DecompositionOptions options;
+  options.numberOfSubdomains = 64;
+  options.strategy = CutStrategy::RecursiveBisection;
+  options.direction = CutDirection::Inertia;
+  const DecompositionResult r = decomposeVolumeBalanced(file.data.surface, options);
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_GT(r.flatCrossingsRemoved, 2000u); // 2,407 of the 2,477 an unchecked removal takes out
+  expectSubdomainsAddUp(r, file.data.surface);
+  EXPECT_EQ(crossingSubdomains(r), 0);
+}

@@ -464,16 +464,20 @@ void PlanarFlipper::run(const std::vector<std::size_t>& seeds)
 }
 } // namespace
 
-std::size_t removeFlatCrossings(
-  SurfaceComplex& c, Index firstCutPoint, double tolerance, const std::vector<Index>& faceGroups)
+std::size_t removeFlatCrossings(SurfaceComplex& c, Index firstCutPoint, double tolerance,
+  const std::vector<Index>& faceGroups, const std::vector<char>* keep, std::vector<Index>* removed)
 {
   Collapser collapser(c, tolerance, faceGroups);
   std::size_t count = 0;
   for (Index p = std::max<Index>(firstCutPoint, 0); p < static_cast<Index>(c.points.size()); ++p)
   {
-    if (collapser.candidate(p) && collapser.tryRemove(p))
+    if ((!keep || !(*keep)[p]) && collapser.candidate(p) && collapser.tryRemove(p))
     {
       ++count;
+      if (removed)
+      {
+        removed->push_back(p);
+      }
     }
   }
   if (count == 0)
