@@ -24,12 +24,14 @@
 
 namespace
 {
-// Every rank holds the whole complex here; the check that relaxation made
-// no subdomain cross itself is shared out: each rank checks the subdomains
-// it owns (the cutter's assignment; every K-th by rank if there is none),
-// and the points to put back are gathered from all, so every rank puts back
-// the same ones as a single process checking everything.
-void shareCrossingChecks(
+// Every rank holds the whole complex here; the work is shared out. The
+// moves: each rank relaxes its share of the groups of movable nodes
+// (RelaxationOptions::processes) and the moved nodes are gathered from all.
+// The check that relaxation made no subdomain cross itself: each rank checks
+// the subdomains it owns (the cutter's assignment; every K-th by rank if
+// there is none), and the points to put back are gathered from all. Every
+// rank ends with what a single process doing everything would.
+void shareOut(
   vtkMultiProcessController* controller, const ptm::ComplexPiece& whole, int rank, ptm::RelaxationOptions& options)
 {
   const int ranks = ptm::rankCount(controller);
@@ -46,7 +48,13 @@ void shareCrossingChecks(
       ptm::allGatherValues(controller, std::vector<long long>(points.begin(), points.end()));
     return std::vector<ptm::Index>(all.begin(), all.end());
   };
+  options.processes = ranks;
+  options.process = rank;
+  options.gatherOverProcesses = [controller](const std::vector<double>& values) {
+    return ptm::allGatherValues(controller, values);
+  };
 }
+
 // The figures of the relaxation as one-value arrays of the output's field data.
 void addRelaxationFields(vtkFieldData* fd, const ptm::RelaxationResult& result, int mode)
 {
@@ -149,7 +157,7 @@ int vtkSurfaceRelaxer::RequestData(
   options.relaxationFactor = this->RelaxationFactor;
   options.featureAngleDegrees = this->FeatureAngle;
   options.nearCutsOnly = this->Region == NEAR_CUTS;
-  shareCrossingChecks(this->Controller, whole, run.Rank(), options);
+  shareOut(this->Controller, whole, run.Rank(), options);
   ptm::RelaxationResult result;
   try
   {

@@ -532,10 +532,18 @@ TEST(SurfaceRelaxationOptions, DeviationBoundAndBadMode)
 namespace
 {
 // Relaxes `a` and `b` (copies of one complex) as processes 0 and 1, each
-// checking the subdomains `checks` gives it; counts the checks made.
+// checking the subdomains `checks` gives it; counts the checks made. With
+// `moves`, the moves are shared out too, from `base` (the mode and
+// iterations), and moves[p] gets how many values process p gave.
 void relaxAsTwoProcesses(SurfaceComplex& a, SurfaceComplex& b, RelaxationResult results[2],
-  const std::function<bool(int process, int subdomain)>& checks)
+  const std::function<bool(int process, int subdomain)>& checks, std::size_t* moves = nullptr,
+  const RelaxationOptions& base = RelaxationOptions{})
 {
+  TwoThreadExchange<std::vector<double>> gather([](const std::vector<double>& x, const std::vector<double>& y) {
+    std::vector<double> all = x;
+    all.insert(all.end(), y.begin(), y.end());
+    return all;
+  });
   // as vtkSurfaceRelaxer's all-gather: both processes' points, concatenated
   TwoThreadExchange<std::vector<Index>> exchange([](const std::vector<Index>& x, const std::vector<Index>& y) {
     std::vector<Index> all = x;
@@ -547,9 +555,18 @@ void relaxAsTwoProcesses(SurfaceComplex& a, SurfaceComplex& b, RelaxationResult 
   for (int p = 0; p < 2; ++p)
   {
     processes.emplace_back([&, p] {
-      RelaxationOptions o;
+      RelaxationOptions o = base;
       o.checksSubdomain = [&, p](int s) { return checks(p, s); };
       o.unionOverProcesses = [&, p](const std::vector<Index>& points) { return exchange.exchange(p, points); };
+      if (moves)
+      {
+        o.processes = 2;
+        o.process = p;
+        o.gatherOverProcesses = [&, p](const std::vector<double>& values) {
+          moves[p] = values.size();
+          return gather.exchange(p, values);
+        };
+      }
       results[p] = relaxSurfaceComplex(*complexes[p], o);
     });
   }
@@ -559,6 +576,71 @@ void relaxAsTwoProcesses(SurfaceComplex& a, SurfaceComplex& b, RelaxationResult 
   }
 }
 } // namespace
+
+namespace
+{
+// Relaxes the decomposition of `surface` as one process and as two sharing
+// the moves, and expects the same complex bit for bit and the same counts;
+// with `bothMove`, that each of the two moved some nodes.
+void expectSharedMovesMatch(
+  const TriangleSurface& surface, CutStrategy strategy, RelaxationMode mode, bool bothMove, const std::string& label)
+{
+  const DecompositionResult d = decomposeVolumeBalanced(surface, stageCaseOptions(7, strategy));
+  ASSERT_TRUE(d.ok) << d.error;
+  SurfaceComplex before = d.complex;
+  ASSERT_TRUE(triangulateAllInterfaces(before).ok);
+  RelaxationOptions base;
+  base.mode = mode;
+  SurfaceComplex single = before;
+  const RelaxationResult one = relaxSurfaceComplex(single, base);
+  ASSERT_TRUE(one.ok) << one.error;
+  ASSERT_GT(one.acceptedMoves, 0u);
+
+  SurfaceComplex a = before, b = before;
+  RelaxationResult two[2];
+  std::size_t moves[2] = { 0, 0 };
+  relaxAsTwoProcesses(
+    a, b, two, [](int p, int s) { return s % 2 == p; }, moves, base);
+  for (const RelaxationResult& r : two)
+  {
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.acceptedMoves, one.acceptedMoves) << label;
+    EXPECT_EQ(r.rejectedMoves, one.rejectedMoves) << label;
+    EXPECT_EQ(r.undoneMoves, one.undoneMoves) << label;
+  }
+  for (std::size_t p = 0; p < 2 && bothMove; ++p)
+  {
+    EXPECT_GT(moves[p], 4u) << label << ": process " << p << " moved no node";
+  }
+  ASSERT_EQ(a.points.size(), single.points.size());
+  EXPECT_EQ(std::memcmp(a.points.data(), single.points.data(), a.points.size() * sizeof(Vec3)), 0) << label;
+  EXPECT_EQ(std::memcmp(b.points.data(), single.points.data(), b.points.size() * sizeof(Vec3)), 0) << label;
+}
+} // namespace
+
+// The moves shared out between two processes (each relaxing its groups of
+// movable nodes, the moved nodes gathered from both) give every process the
+// one-process complex bit for bit, and the same counts, in both modes. It
+// fails if a group is split between the processes (one sees moves it
+// should not) or a moved node is not gathered. On the ball the contours are
+// curved, so every interface is a group of its own and KeepSurface gives
+// both processes some; on the box the faces and straight contours join the
+// groups near the cuts into one, which one process relaxes for both, as
+// SmoothSurface's groups near the cuts may be.
+TEST(SurfaceRelaxationShared, TwoProcessesSharingTheMovesGiveTheOneProcessResult)
+{
+  for (const CutStrategy strategy : { CutStrategy::ParallelPlanes, CutStrategy::RecursiveBisection })
+  {
+    for (const RelaxationMode mode : { RelaxationMode::KeepSurface, RelaxationMode::SmoothSurface })
+    {
+      const std::string label =
+        std::string(toString(strategy)) + (mode == RelaxationMode::KeepSurface ? " keep" : " smooth");
+      expectSharedMovesMatch(icosphere({ 0, 0, 0 }, 1.0, 3), strategy, mode, mode == RelaxationMode::KeepSurface,
+        "ball " + label);
+      expectSharedMovesMatch(subdividedBox({ 0, 0, 0 }, { 2, 1, 1 }, 6), strategy, mode, false, "box " + label);
+    }
+  }
+}
 
 // The check for crossings after relaxation shared out between two
 // processes (each its own subdomains, the points to put back gathered from

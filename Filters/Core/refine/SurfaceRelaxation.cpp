@@ -3,6 +3,7 @@
 #include "SelfIntersectionCheck.h"
 #include "StraightContourPoints.h"
 #include "SubdomainSurface.h"
+#include "UnionFind.h"
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <map>
@@ -255,6 +257,12 @@ private:
   double worstAngle(Index v) const;
   bool valid(Index v) const;
   bool relaxNode(Index v);
+  bool movable(std::size_t v) const
+  {
+    return active[v] && kind[v] != NodeKind::Fixed && !trianglesOf[v].empty();
+  }
+  std::vector<char> nodesOfThisProcess() const;
+  void shareMoves(const std::vector<char>& mine, RelaxationResult& result);
 };
 
 void Relaxer::buildAdjacency()
@@ -882,11 +890,12 @@ void Relaxer::run(RelaxationResult& result)
     result.slidingNodes += kind[v] == NodeKind::Sliding;
     result.fixedNodes += kind[v] == NodeKind::Fixed;
   }
+  const std::vector<char> mine = nodesOfThisProcess();
   for (int iteration = 0; iteration < options.iterations; ++iteration)
   {
     for (std::size_t v = 0; v < n; ++v)
     {
-      if (!active[v] || kind[v] == NodeKind::Fixed || trianglesOf[v].empty())
+      if (!mine[v])
       {
         continue;
       }
@@ -901,6 +910,102 @@ void Relaxer::run(RelaxationResult& result)
     }
   }
   result.movesBeyondDeviation = movesBeyondDeviation;
+  if (options.processes > 1 && options.gatherOverProcesses)
+  {
+    shareMoves(mine, result);
+  }
+}
+
+// The movable nodes this process relaxes (RelaxationOptions::processes):
+// all of them on one process, else the groups of movable nodes connected
+// through movable neighbours assigned to it, largest first (ties by their
+// first node), each to the least loaded process (ties to the lowest).
+std::vector<char> Relaxer::nodesOfThisProcess() const
+{
+  const std::size_t n = c.points.size();
+  std::vector<char> mine(n, 0);
+  for (std::size_t v = 0; v < n; ++v)
+  {
+    mine[v] = movable(v);
+  }
+  if (options.processes <= 1 || !options.gatherOverProcesses)
+  {
+    return mine;
+  }
+  UnionFind groups(n);
+  for (std::size_t v = 0; v < n; ++v)
+  {
+    for (Index w : neighbours[v])
+    {
+      if (mine[v] && mine[w])
+      {
+        groups.unite(v, static_cast<std::size_t>(w));
+      }
+    }
+  }
+  std::map<std::size_t, std::pair<std::size_t, std::size_t>> sizeAndFirst; // by root
+  for (std::size_t v = 0; v < n; ++v)
+  {
+    if (mine[v])
+    {
+      auto [it, inserted] = sizeAndFirst.emplace(groups.find(v), std::make_pair(std::size_t{ 0 }, v));
+      ++it->second.first;
+    }
+  }
+  std::vector<std::pair<std::size_t, std::size_t>> order; // (size, first node), then the root's owner
+  std::map<std::size_t, std::size_t> rootOfFirst;
+  for (const auto& [root, sf] : sizeAndFirst)
+  {
+    order.push_back(sf);
+    rootOfFirst.emplace(sf.second, root);
+  }
+  std::sort(order.begin(), order.end(),
+    [](const auto& a, const auto& b) { return a.first != b.first ? a.first > b.first : a.second < b.second; });
+  std::vector<std::size_t> load(static_cast<std::size_t>(options.processes), 0);
+  std::map<std::size_t, int> owner; // by root
+  for (const auto& [size, first] : order)
+  {
+    const auto least = std::min_element(load.begin(), load.end()) - load.begin();
+    load[least] += size;
+    owner.emplace(rootOfFirst.at(first), static_cast<int>(least));
+  }
+  for (std::size_t v = 0; v < n; ++v)
+  {
+    mine[v] = mine[v] && owner.at(groups.find(v)) == options.process;
+  }
+  return mine;
+}
+
+// Every process's moved nodes and counts to every process: the nodes of
+// `mine` whose coordinates changed (bit for bit) as (index, x, y, z), then
+// (-1, accepted, rejected, beyond the deviation).
+void Relaxer::shareMoves(const std::vector<char>& mine, RelaxationResult& result)
+{
+  std::vector<double> local;
+  for (std::size_t v = 0; v < mine.size(); ++v)
+  {
+    if (mine[v] && std::memcmp(&c.points[v], &original[v], sizeof(Vec3)) != 0)
+    {
+      local.insert(local.end(), { static_cast<double>(v), c.points[v][0], c.points[v][1], c.points[v][2] });
+    }
+  }
+  local.insert(local.end(), { -1.0, static_cast<double>(result.acceptedMoves),
+                              static_cast<double>(result.rejectedMoves), static_cast<double>(movesBeyondDeviation) });
+  const std::vector<double> all = options.gatherOverProcesses(local);
+  result.acceptedMoves = result.rejectedMoves = result.movesBeyondDeviation = 0;
+  for (std::size_t i = 0; i + 3 < all.size(); i += 4)
+  {
+    if (all[i] < 0)
+    {
+      result.acceptedMoves += static_cast<std::size_t>(all[i + 1]);
+      result.rejectedMoves += static_cast<std::size_t>(all[i + 2]);
+      result.movesBeyondDeviation += static_cast<std::size_t>(all[i + 3]);
+    }
+    else
+    {
+      c.points[static_cast<std::size_t>(all[i])] = Vec3{ all[i + 1], all[i + 2], all[i + 3] };
+    }
+  }
 }
 
 // The triangles of `surface` that have a moved point (`moved`) or whose box

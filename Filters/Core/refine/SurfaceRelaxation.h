@@ -84,6 +84,18 @@ struct RelaxationOptions
   // number of rounds). Both empty (default): this process checks all.
   std::function<bool(int)> checksSubdomain;
   std::function<std::vector<Index>(const std::vector<Index>&)> unionOverProcesses;
+  // The moves may be shared out the same way: the movable nodes fall into
+  // groups connected through movable neighbours only, and no group sees
+  // another's moves (a node's move depends on its neighbours alone), so
+  // process `process` of `processes` relaxes only the groups assigned to it
+  // (largest first, each to the least loaded process) and
+  // gatherOverProcesses(values) returns every process's values concatenated
+  // in process order (a collective call, once per relaxation). Every process
+  // then holds what one process relaxing everything would, bit for bit.
+  // processes <= 1 (default): this process relaxes all.
+  int processes = 1;
+  int process = 0;
+  std::function<std::vector<double>(const std::vector<double>&)> gatherOverProcesses;
 };
 
 struct TriangleQualityFigures
