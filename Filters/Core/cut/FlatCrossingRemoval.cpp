@@ -465,7 +465,7 @@ void PlanarFlipper::run(const std::vector<std::size_t>& seeds)
 } // namespace
 
 std::size_t removeFlatCrossings(SurfaceComplex& c, Index firstCutPoint, double tolerance,
-  const std::vector<Index>& faceGroups, const std::vector<char>* keep, std::vector<Index>* removed)
+  const std::vector<Index>& faceGroups, const std::vector<char>* keep)
 {
   Collapser collapser(c, tolerance, faceGroups);
   std::size_t count = 0;
@@ -474,10 +474,6 @@ std::size_t removeFlatCrossings(SurfaceComplex& c, Index firstCutPoint, double t
     if ((!keep || !(*keep)[p]) && collapser.candidate(p) && collapser.tryRemove(p))
     {
       ++count;
-      if (removed)
-      {
-        removed->push_back(p);
-      }
     }
   }
   if (count == 0)

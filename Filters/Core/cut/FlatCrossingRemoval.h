@@ -37,10 +37,8 @@
 // firstCutPoint keep their index. Candidates are taken in index order, so
 // the same complex gives the same result on every rank. Returns the number
 // of points removed. Optional: `keep` (per point of `c`, nonzero: never
-// taken out) and `removed` (filled with the points taken out, by their
-// index before the renumbering), for a caller that checks the result and
-// takes out less where it must (VolumeBalancedDecomposition.cpp,
-// removeCheckedFlatCrossings).
+// taken out), for a caller that checks the result and takes out less where
+// it must (VolumeBalancedDecomposition.cpp, removeCheckedFlatCrossings).
 #include "SurfaceComplex.h"
 
 #include <cstddef>
@@ -49,7 +47,6 @@
 namespace ptm
 {
 std::size_t removeFlatCrossings(SurfaceComplex& c, Index firstCutPoint, double tolerance,
-  const std::vector<Index>& faceGroups = {}, const std::vector<char>* keep = nullptr,
-  std::vector<Index>* removed = nullptr);
+  const std::vector<Index>& faceGroups = {}, const std::vector<char>* keep = nullptr);
 } // namespace ptm
 #endif

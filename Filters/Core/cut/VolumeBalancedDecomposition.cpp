@@ -548,6 +548,24 @@ bool partCrossesItself(const SurfaceComplex& c, int cell, const CutZone& cut, in
   return !report.checked || report.intersects;
 }
 
+// What every process found in a check shared among them
+// (DecompositionOptions::checksPart): the largest `found` over the
+// processes (options.maxOverProcesses; `found` alone without it), 0 none
+// crossing, 1 one. Throws `failure` (with `why`, this process's reason, or
+// "on another process") where a process's check threw (kCheckFailed).
+int agreeOnCheck(const DecompositionOptions& options, int found, const std::string& why, const std::string& failure)
+{
+  if (options.maxOverProcesses)
+  {
+    found = options.maxOverProcesses(found);
+  }
+  if (found >= kCheckFailed)
+  {
+    throw std::runtime_error(failure + (why.empty() ? std::string(" on another process") : ": " + why));
+  }
+  return found;
+}
+
 // Splits a copy of the complex by the plane n . x = at; `missing` is the
 // volume the part below lacks, `area` the cross-section (the rate at
 // which the volume changes with the offset).
@@ -1007,16 +1025,7 @@ bool PartCut::anyPartCrosses(const SurfaceComplex& trialComplex, const std::set<
     found = kCheckFailed; // still joins the collective, so no process waits for this one
     why = e.what();
   }
-  if (options.maxOverProcesses)
-  {
-    found = options.maxOverProcesses(found);
-  }
-  if (found >= kCheckFailed)
-  {
-    throw std::runtime_error("the check that a cut's parts do not cross themselves failed" +
-      (why.empty() ? std::string(" on another process") : ": " + why));
-  }
-  return found == 1;
+  return agreeOnCheck(options, found, why, "the check that a cut's parts do not cross themselves failed") == 1;
 }
 
 // A cut whose parts cross themselves is never shipped. Seen only where
@@ -1250,6 +1259,158 @@ double flatTolerance(const SurfaceComplex& c)
   return roundOffTolerance(c.points, 1e-13);
 }
 
+/// @name The removal of flat crossings, checked
+/// @{
+
+// Whether the whole surface of subdomain `s` crosses itself, every region
+// of it triangulated as partCrossesItself does near a cut (unsmoothed, at
+// the default bounds), checked with CGAL's exact predicates. A region that
+// cannot be triangulated counts as crossing.
+bool subdomainCrossesItself(const SurfaceComplex& c, int s, InterfaceTriangulationCache& triangulations)
+{
+  CutZone everywhere; // reaches every box: every region is triangulated refined
+  everywhere.normal = Vec3{ 1, 0, 0 };
+  const double infinity = std::numeric_limits<double>::infinity();
+  everywhere.box.lo = Vec3{ -infinity, -infinity, -infinity };
+  everywhere.box.hi = Vec3{ infinity, infinity, infinity };
+  everywhere.low = -infinity;
+  everywhere.high = infinity;
+  PartRegions r = regionsOfPart(c, s, everywhere, s, s, 0);
+  r.hasCut = true;
+  r.cut = everywhere;
+  TriangleSurface part;
+  std::vector<Index> near;
+  if (!partSurface(c, s, r, true, triangulations, part, near))
+  {
+    return true;
+  }
+  const SelfIntersectionReport report = checkSelfIntersection(part);
+  return !report.checked || report.intersects;
+}
+
+// The subdomains on either side of a region of `after` that lost a point
+// to the removal (fewer loop edges than in `before`, region by region;
+// every region if the regions differ) and is bent (a point of it off its
+// plane by more than 1e-10 of the bounding-box diagonal). The removal keeps
+// every planar star and flat region the same point set up to the flatness
+// tolerance, so only a bent region, triangulated anew, can make a subdomain
+// cross itself.
+std::set<int> sidesOfBentShrunkRegions(const SurfaceComplex& before, const SurfaceComplex& after)
+{
+  std::set<int> sides;
+  const bool sameRegions = before.interfaces.size() == after.interfaces.size();
+  const double roundOff = 1e-10 * boundingBoxDiagonal(after.points);
+  for (std::size_t k = 0; k < after.interfaces.size(); ++k)
+  {
+    const InterfaceRegion& region = after.interfaces[k];
+    if (sameRegions && region.edges.size() == before.interfaces[k].edges.size())
+    {
+      continue;
+    }
+    const CuttingPlane& plane = after.planes[region.planeId];
+    const bool bent = std::any_of(region.edges.begin(), region.edges.end(), [&](const DirectedEdge& e) {
+      return std::fabs(dot(plane.normal, after.points[e[0]] - plane.origin)) > roundOff;
+    });
+    for (int side : region.pair)
+    {
+      if (side >= 0 && (bent || !sameRegions))
+      {
+        sides.insert(side);
+      }
+    }
+  }
+  return sides;
+}
+
+// Of the subdomains beside the bent regions the removal shrank, those that
+// cross themselves (subdomainCrossesItself), the checks shared among
+// processes as the cuts' are (options.checksPart; one maxOverProcesses per
+// subdomain checked, the same number on every process).
+std::set<int> crossingAfterRemoval(const SurfaceComplex& before, const SurfaceComplex& after,
+  const DecompositionOptions& options, InterfaceTriangulationCache& triangulations)
+{
+  std::set<int> crossing;
+  std::string why;
+  for (int s : sidesOfBentShrunkRegions(before, after))
+  {
+    int found = 0;
+    try
+    {
+      found = why.empty() && (!options.checksPart || options.checksPart(s)) &&
+          subdomainCrossesItself(after, s, triangulations)
+        ? 1
+        : 0;
+    }
+    catch (const std::exception& e)
+    {
+      if (!options.maxOverProcesses)
+      {
+        throw;
+      }
+      why = e.what();
+    }
+    found = why.empty() ? found : kCheckFailed; // still joins the collective
+    if (agreeOnCheck(options, found, why, "the check that taking out flat crossings made no subdomain cross itself "
+                                          "failed") == 1)
+    {
+      crossing.insert(s);
+    }
+  }
+  return crossing;
+}
+
+// Recursive bisection takes the flat crossings out once, after the last
+// cut, and the cuts' own checks do not see that. On OCCT's Top and Bottom at
+// K = 64 (volume balance, the cutter's defaults) it left subdomains 19, and
+// 18 and 19, crossing themselves: the Top then failed in the mesher ("the
+// surface of subdomain 19 is not closed"), in the GUI and pvbatch
+// pipelines, which do not cut again. So the subdomains beside the bent
+// regions the removal changed are checked whole (crossingAfterRemoval), and
+// where one crosses itself the removal is made again from the complex
+// before it, keeping every point of the crossing subdomains; after
+// kRemovalRounds rounds nothing is taken out. Returns the number of points
+// taken out. Cost, the cutter alone on the 45 corpus surfaces at K = 16,
+// 32, 64 (cases over 1 s, one process): 1.16 x by bisection; every
+// subdomain the removal touched checked whole, 1.25 x; each one checked
+// only where a plane's zone reaches (partCrossesItself), 1.28 x, as it
+// checks a subdomain once per plane. Parallel planes' removals stay
+// unchecked (Cutting::cut).
+constexpr int kRemovalRounds = 4;
+
+std::size_t removeCheckedFlatCrossings(SurfaceComplex& c, Index firstCutPoint, const DecompositionOptions& options,
+  InterfaceTriangulationCache& triangulations, DecompositionResult& result)
+{
+  std::vector<char> keep(c.points.size(), 0);
+  for (int round = 0; round < kRemovalRounds; ++round)
+  {
+    SurfaceComplex trial = c;
+    const std::size_t count = removeFlatCrossings(trial, firstCutPoint, flatTolerance(c), options.faceGroups, &keep);
+    const std::set<int> crossing = crossingAfterRemoval(c, trial, options, triangulations);
+    if (crossing.empty())
+    {
+      c = std::move(trial);
+      return count;
+    }
+    std::ostringstream msg;
+    msg << "taking out the flat crossings made " << crossing.size()
+        << " subdomain(s) cross themselves (first: " << *crossing.begin() << "); their points were kept";
+    result.warnings.push_back(msg.str());
+    for (std::size_t i = 0; i < c.triangles.size(); ++i)
+    {
+      const auto& pair = c.trianglePairs[i];
+      if (crossing.count(pair[0]) || crossing.count(pair[1]))
+      {
+        for (Index v : c.triangles[i])
+        {
+          keep[v] = 1;
+        }
+      }
+    }
+  }
+  return 0;
+}
+/// @}
+
 // The cuts of the decomposition. Parts are numbered as they are made (the
 // whole object is part 0, every cut makes two new ones); leaves lists the
 // final parts in subdomain order.
@@ -1320,8 +1481,14 @@ bool Cutting::cut(int cell, const Vec3& proposedNormal, double fraction, int par
     // plane 45 was sound after plane 44's removal, and the whole
     // decomposition was cut again keeping every flat crossing (59,496
     // points instead of 27,461; 31.2 s instead of 11.3 s). Checking the
-    // finished slab after each removal as well found nothing more on the
-    // corpus (K = 16, 32, 64) and cost 7 %.
+    // whole finished slab after each removal found nothing more on the
+    // corpus (K = 16, 32, 64, by volume) and cost 7 %. Session 48 checked
+    // the two parts of each cut beside the bent regions the removal shrank
+    // (as bisection's last removal is, removeCheckedFlatCrossings): it
+    // found OCCT's Bottom at K = 16 by predicted cost with part 10 crossing
+    // itself and cut the Bottom at K = 64 by volume at once instead of
+    // again keeping the flat crossings, but made the planes' cuts 1.47 x
+    // slower on the corpus (cases over 1 s); not kept.
     result.flatCrossingsRemoved += removeFlatCrossings(c, firstNewPoint, flatTolerance(c), options.faceGroups);
   }
   return true;
@@ -1563,154 +1730,6 @@ DecompositionResult decomposeVolumeBalanced(const TriangleSurface& input, const 
 
 namespace
 {
-/// @name The removal of flat crossings after recursive bisection, checked
-/// @{
-
-// Whether the whole surface of subdomain `s` crosses itself, every region
-// of it triangulated as partCrossesItself does near a cut (unsmoothed, at
-// the default bounds), checked with CGAL's exact predicates. A region that
-// cannot be triangulated counts as crossing.
-bool subdomainCrossesItself(const SurfaceComplex& c, int s, InterfaceTriangulationCache& triangulations)
-{
-  CutZone everywhere; // reaches every box: every region is triangulated refined
-  everywhere.normal = Vec3{ 1, 0, 0 };
-  everywhere.box.lo = Vec3{ -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
-    -std::numeric_limits<double>::infinity() };
-  everywhere.box.hi = -1.0 * everywhere.box.lo;
-  everywhere.low = -std::numeric_limits<double>::infinity();
-  everywhere.high = std::numeric_limits<double>::infinity();
-  PartRegions r = regionsOfPart(c, s, everywhere, s, s, 0);
-  r.hasCut = true;
-  r.cut = everywhere;
-  TriangleSurface part;
-  std::vector<Index> near;
-  if (!partSurface(c, s, r, true, triangulations, part, near))
-  {
-    return true;
-  }
-  const SelfIntersectionReport report = checkSelfIntersection(part);
-  return !report.checked || report.intersects;
-}
-
-// The subdomains of `c` with a triangle at one of `points`.
-std::set<int> subdomainsAt(const SurfaceComplex& c, const std::vector<Index>& points)
-{
-  std::vector<char> marked(c.points.size(), 0);
-  for (Index p : points)
-  {
-    marked[p] = 1;
-  }
-  std::set<int> at;
-  for (std::size_t i = 0; i < c.triangles.size(); ++i)
-  {
-    const Triangle& t = c.triangles[i];
-    if (marked[t[0]] || marked[t[1]] || marked[t[2]])
-    {
-      for (int side : c.trianglePairs[i])
-      {
-        if (side >= 0)
-        {
-          at.insert(side);
-        }
-      }
-    }
-  }
-  return at;
-}
-
-// Of `candidates`, those that cross themselves (subdomainCrossesItself),
-// the checks shared among processes as the cuts' are (options.checksPart;
-// one maxOverProcesses per candidate, the same number on every process).
-std::set<int> crossingSubdomains(const SurfaceComplex& c, const std::set<int>& candidates,
-  const DecompositionOptions& options, InterfaceTriangulationCache& triangulations)
-{
-  std::set<int> crossing;
-  std::string why;
-  for (int s : candidates)
-  {
-    int found = 0;
-    try
-    {
-      found = why.empty() && (!options.checksPart || options.checksPart(s)) &&
-          subdomainCrossesItself(c, s, triangulations)
-        ? 1
-        : 0;
-    }
-    catch (const std::exception& e)
-    {
-      if (!options.maxOverProcesses)
-      {
-        throw;
-      }
-      why = e.what();
-    }
-    found = why.empty() ? found : kCheckFailed; // still joins the collective
-    if (options.maxOverProcesses)
-    {
-      found = options.maxOverProcesses(found);
-    }
-    if (found >= kCheckFailed)
-    {
-      throw std::runtime_error("the check that the subdomains do not cross themselves after taking out flat "
-                               "crossings failed" +
-        (why.empty() ? std::string(" on another process") : ": " + why));
-    }
-    if (found == 1)
-    {
-      crossing.insert(s);
-    }
-  }
-  return crossing;
-}
-
-// Recursive bisection takes the flat crossings out once, after the last
-// cut (parallel planes after every cut and once more at the end), and the
-// cuts' own checks do not see that. On OCCT's Top and Bottom
-// at K = 64 (volume balance, the cutter's defaults) it left subdomains 19,
-// and 18 and 19, crossing themselves: the Top then failed in the mesher
-// ("the surface of subdomain 19 is not closed"), in the GUI and pvbatch
-// pipelines, which do not cut again. So every subdomain the removal changed
-// is checked whole, and where one crosses itself the removal is made again
-// from the complex before it, keeping every point of the crossing
-// subdomains; after kRemovalRounds rounds nothing is taken out. Returns the
-// number of points taken out.
-constexpr int kRemovalRounds = 4;
-
-std::size_t removeCheckedFlatCrossings(SurfaceComplex& c, Index firstCutPoint, const DecompositionOptions& options,
-  InterfaceTriangulationCache& triangulations, DecompositionResult& result)
-{
-  std::vector<char> keep(c.points.size(), 0);
-  for (int round = 0; round < kRemovalRounds; ++round)
-  {
-    SurfaceComplex trial = c;
-    std::vector<Index> removed;
-    const std::size_t count =
-      removeFlatCrossings(trial, firstCutPoint, flatTolerance(c), options.faceGroups, &keep, &removed);
-    const std::set<int> crossing = crossingSubdomains(trial, subdomainsAt(c, removed), options, triangulations);
-    if (crossing.empty())
-    {
-      c = std::move(trial);
-      return count;
-    }
-    std::ostringstream msg;
-    msg << "taking out the flat crossings made " << crossing.size()
-        << " subdomain(s) cross themselves (first: " << *crossing.begin() << "); their points were kept";
-    result.warnings.push_back(msg.str());
-    for (std::size_t i = 0; i < c.triangles.size(); ++i)
-    {
-      const auto& pair = c.trianglePairs[i];
-      if (crossing.count(pair[0]) || crossing.count(pair[1]))
-      {
-        for (Index v : c.triangles[i])
-        {
-          keep[v] = 1;
-        }
-      }
-    }
-  }
-  return 0;
-}
-/// @}
 
 // One decomposition with `options`; result.failedInCuts says whether it
 // failed in the cuts themselves (not on the options or the input).
@@ -1762,7 +1781,11 @@ DecompositionResult decomposeOnce(PreparedSurface prepared, const DecompositionO
     cutting.leaves.push_back(0);
   }
   renumberParts(c, cutting.leaves, cutting.nextCell, K);
-  if (options.removeFlatCrossings)
+  if (options.removeFlatCrossings && options.strategy == CutStrategy::ParallelPlanes)
+  {
+    result.flatCrossingsRemoved += removeFlatCrossings(c, inputPoints, flatTolerance(c), options.faceGroups);
+  }
+  else if (options.removeFlatCrossings)
   {
     result.flatCrossingsRemoved += removeCheckedFlatCrossings(c, inputPoints, options, triangulations, result);
   }
