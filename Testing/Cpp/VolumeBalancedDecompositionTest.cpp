@@ -1199,6 +1199,20 @@ TEST(VolumeBalancedDecomposition, AHairlinePokeUnderTheInterfaceMovesThePlane)
   EXPECT_EQ(crossingSubdomains(r), 0);
 }
 
+namespace
+{
+// `surface` cut into 64 subdomains with the cutter's defaults (inertia
+// direction, volume balance, flat crossings taken out) by `strategy`.
+DecompositionResult cutBy64WithTheCuttersDefaults(const TriangleSurface& surface, CutStrategy strategy)
+{
+  DecompositionOptions options;
+  options.numberOfSubdomains = 64;
+  options.strategy = strategy;
+  options.direction = CutDirection::Inertia;
+  return decomposeVolumeBalanced(surface, options);
+}
+} // namespace
+
 // OCCT's Top at K = 64 by parallel planes (inertia direction, by volume, as
 // the cutter's defaults): each cut's removal of flat crossings took out the
 // earlier planes' too; after plane 44 the rest then crossed itself near a
@@ -1212,11 +1226,7 @@ TEST(VolumeBalancedDecomposition, EachPlaneTakesOutOnlyItsOwnFlatCrossings)
 {
   const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/occt_top.off");
   ASSERT_TRUE(file.ok) << file.error;
-  DecompositionOptions options;
-  options.numberOfSubdomains = 64;
-  options.strategy = CutStrategy::ParallelPlanes;
-  options.direction = CutDirection::Inertia;
-  const DecompositionResult r = decomposeVolumeBalanced(file.data.surface, options);
+  const DecompositionResult r = cutBy64WithTheCuttersDefaults(file.data.surface, CutStrategy::ParallelPlanes);
   ASSERT_TRUE(r.ok) << r.error;
   EXPECT_GT(r.flatCrossingsRemoved, 0u);
   for (const std::string& w : r.warnings)
@@ -1237,11 +1247,7 @@ TEST(VolumeBalancedDecomposition, TakingOutFlatCrossingsAfterBisectionKeepsSubdo
 {
   const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/occt_top.off");
   ASSERT_TRUE(file.ok) << file.error;
-  DecompositionOptions options;
-  options.numberOfSubdomains = 64;
-  options.strategy = CutStrategy::RecursiveBisection;
-  options.direction = CutDirection::Inertia;
-  const DecompositionResult r = decomposeVolumeBalanced(file.data.surface, options);
+  const DecompositionResult r = cutBy64WithTheCuttersDefaults(file.data.surface, CutStrategy::RecursiveBisection);
   ASSERT_TRUE(r.ok) << r.error;
   EXPECT_GT(r.flatCrossingsRemoved, 2000u); // 2,407 of the 2,477 an unchecked removal takes out
   expectSubdomainsAddUp(r, file.data.surface);
