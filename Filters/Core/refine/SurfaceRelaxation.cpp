@@ -16,6 +16,7 @@
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <numeric>
 #include <map>
 #include <set>
 
@@ -943,35 +944,36 @@ std::vector<char> Relaxer::nodesOfThisProcess() const
       }
     }
   }
-  std::map<std::size_t, std::pair<std::size_t, std::size_t>> sizeAndFirst; // by root
+  // the groups numbered in the order of their first node, and their sizes
+  constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+  std::vector<std::size_t> groupOfRoot(n, kNone), sizes;
   for (std::size_t v = 0; v < n; ++v)
   {
     if (mine[v])
     {
-      auto [it, inserted] = sizeAndFirst.emplace(groups.find(v), std::make_pair(std::size_t{ 0 }, v));
-      ++it->second.first;
+      std::size_t& g = groupOfRoot[groups.find(v)];
+      if (g == kNone)
+      {
+        g = sizes.size();
+        sizes.push_back(0);
+      }
+      ++sizes[g];
     }
   }
-  std::vector<std::pair<std::size_t, std::size_t>> order; // (size, first node), then the root's owner
-  std::map<std::size_t, std::size_t> rootOfFirst;
-  for (const auto& [root, sf] : sizeAndFirst)
-  {
-    order.push_back(sf);
-    rootOfFirst.emplace(sf.second, root);
-  }
-  std::sort(order.begin(), order.end(),
-    [](const auto& a, const auto& b) { return a.first != b.first ? a.first > b.first : a.second < b.second; });
+  std::vector<std::size_t> order(sizes.size());
+  std::iota(order.begin(), order.end(), std::size_t{ 0 });
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return sizes[a] > sizes[b]; });
   std::vector<std::size_t> load(static_cast<std::size_t>(options.processes), 0);
-  std::map<std::size_t, int> owner; // by root
-  for (const auto& [size, first] : order)
+  std::vector<int> owner(sizes.size(), 0);
+  for (std::size_t g : order)
   {
     const auto least = std::min_element(load.begin(), load.end()) - load.begin();
-    load[least] += size;
-    owner.emplace(rootOfFirst.at(first), static_cast<int>(least));
+    load[least] += sizes[g];
+    owner[g] = static_cast<int>(least);
   }
   for (std::size_t v = 0; v < n; ++v)
   {
-    mine[v] = mine[v] && owner.at(groups.find(v)) == options.process;
+    mine[v] = mine[v] && owner[groupOfRoot[groups.find(v)]] == options.process;
   }
   return mine;
 }
