@@ -1330,16 +1330,13 @@ std::set<int> crossingAfterRemoval(const SurfaceComplex& before, const SurfaceCo
   const DecompositionOptions& options, InterfaceTriangulationCache& triangulations)
 {
   std::set<int> crossing;
-  std::string why;
   for (int s : sidesOfBentShrunkRegions(before, after))
   {
     int found = 0;
+    std::string why;
     try
     {
-      found = why.empty() && (!options.checksPart || options.checksPart(s)) &&
-          subdomainCrossesItself(after, s, triangulations)
-        ? 1
-        : 0;
+      found = (!options.checksPart || options.checksPart(s)) && subdomainCrossesItself(after, s, triangulations);
     }
     catch (const std::exception& e)
     {
@@ -1347,9 +1344,9 @@ std::set<int> crossingAfterRemoval(const SurfaceComplex& before, const SurfaceCo
       {
         throw;
       }
+      found = kCheckFailed; // still joins the collective, which then throws on every process
       why = e.what();
     }
-    found = why.empty() ? found : kCheckFailed; // still joins the collective
     if (agreeOnCheck(options, found, why, "the check that taking out flat crossings made no subdomain cross itself "
                                           "failed") == 1)
     {
