@@ -1288,6 +1288,15 @@ bool subdomainCrossesItself(const SurfaceComplex& c, int s, InterfaceTriangulati
   return !report.checked || report.intersects;
 }
 
+// Whether a point of the region is off its plane by more than `roundOff`.
+bool isBent(const SurfaceComplex& c, const InterfaceRegion& region, double roundOff)
+{
+  const CuttingPlane& plane = c.planes[region.planeId];
+  return std::any_of(region.edges.begin(), region.edges.end(), [&](const DirectedEdge& e) {
+    return std::fabs(dot(plane.normal, c.points[e[0]] - plane.origin)) > roundOff;
+  });
+}
+
 // The subdomains on either side of a region of `after` that lost a point
 // to the removal (fewer loop edges than in `before`, region by region;
 // every region if the regions differ) and is bent (a point of it off its
@@ -1307,10 +1316,7 @@ std::set<int> sidesOfBentShrunkRegions(const SurfaceComplex& before, const Surfa
     {
       continue;
     }
-    const CuttingPlane& plane = after.planes[region.planeId];
-    const bool bent = std::any_of(region.edges.begin(), region.edges.end(), [&](const DirectedEdge& e) {
-      return std::fabs(dot(plane.normal, after.points[e[0]] - plane.origin)) > roundOff;
-    });
+    const bool bent = isBent(after, region, roundOff);
     for (int side : region.pair)
     {
       if (side >= 0 && (bent || !sameRegions))
@@ -1322,21 +1328,45 @@ std::set<int> sidesOfBentShrunkRegions(const SurfaceComplex& before, const Surfa
   return sides;
 }
 
-// Of the subdomains beside the bent regions the removal shrank, those that
-// cross themselves (subdomainCrossesItself), the checks shared among
-// processes as the cuts' are (options.checksPart; one maxOverProcesses per
-// subdomain checked, the same number on every process).
-std::set<int> crossingAfterRemoval(const SurfaceComplex& before, const SurfaceComplex& after,
-  const DecompositionOptions& options, InterfaceTriangulationCache& triangulations)
+// The subdomains on either side of a bent region (as above) of one of
+// `planes`: those a removal after each of these planes' cuts may have bent
+// (Cutting::cut). A removal after plane i takes out only plane i's points,
+// so only plane i's regions lose points.
+std::set<int> sidesOfBentRegionsOn(const SurfaceComplex& c, const std::set<int>& planes)
+{
+  std::set<int> sides;
+  const double roundOff = 1e-10 * boundingBoxDiagonal(c.points);
+  for (const InterfaceRegion& region : c.interfaces)
+  {
+    if (planes.count(region.planeId) && isBent(c, region, roundOff))
+    {
+      for (int side : region.pair)
+      {
+        if (side >= 0)
+        {
+          sides.insert(side);
+        }
+      }
+    }
+  }
+  return sides;
+}
+
+// Of the subdomains `sides`, those that cross themselves
+// (subdomainCrossesItself), the checks shared among processes as the cuts'
+// are (options.checksPart; one maxOverProcesses per subdomain checked, the
+// same number on every process).
+std::set<int> crossingOf(const SurfaceComplex& c, const std::set<int>& sides, const DecompositionOptions& options,
+  InterfaceTriangulationCache& triangulations)
 {
   std::set<int> crossing;
-  for (int s : sidesOfBentShrunkRegions(before, after))
+  for (int s : sides)
   {
     int found = 0;
     std::string why;
     try
     {
-      found = (!options.checksPart || options.checksPart(s)) && subdomainCrossesItself(after, s, triangulations);
+      found = (!options.checksPart || options.checksPart(s)) && subdomainCrossesItself(c, s, triangulations);
     }
     catch (const std::exception& e)
     {
@@ -1362,7 +1392,7 @@ std::set<int> crossingAfterRemoval(const SurfaceComplex& before, const SurfaceCo
 // 18 and 19, crossing themselves: the Top then failed in the mesher ("the
 // surface of subdomain 19 is not closed"), in the GUI and pvbatch
 // pipelines, which do not cut again. So the subdomains beside the bent
-// regions the removal changed are checked whole (crossingAfterRemoval), and
+// regions the removal changed are checked whole (crossingOf), and
 // where one crosses itself the removal is made again from the complex
 // before it, keeping every point of the crossing subdomains; after
 // kRemovalRounds rounds nothing is taken out. Returns the number of points
@@ -1370,19 +1400,23 @@ std::set<int> crossingAfterRemoval(const SurfaceComplex& before, const SurfaceCo
 // 32, 64 (cases over 1 s, one process): 1.16 x by bisection; every
 // subdomain the removal touched checked whole, 1.25 x; each one checked
 // only where a plane's zone reaches (partCrossesItself), 1.28 x, as it
-// checks a subdomain once per plane. Parallel planes' removals stay
-// unchecked (Cutting::cut).
+// checks a subdomain once per plane. Parallel planes' last removal is
+// checked the same way: unchecked, it left subdomain 7 of OCCT's Bottom at
+// K = 16 (by volume) crossing itself, and tetmesh.py failed on it in the
+// mesher after 67 s of attempts, then recut keeping every flat crossing
+// (2.57 M tetrahedra, 0.00 degrees). Their removals after each cut are
+// checked once after the last cut (planesOfCrossingSlabs).
 constexpr int kRemovalRounds = 4;
 
 std::size_t removeCheckedFlatCrossings(SurfaceComplex& c, Index firstCutPoint, const DecompositionOptions& options,
-  InterfaceTriangulationCache& triangulations, DecompositionResult& result)
+  InterfaceTriangulationCache& triangulations, std::vector<char> keep, DecompositionResult& result)
 {
-  std::vector<char> keep(c.points.size(), 0);
+  keep.resize(c.points.size(), 0);
   for (int round = 0; round < kRemovalRounds; ++round)
   {
     SurfaceComplex trial = c;
     const std::size_t count = removeFlatCrossings(trial, firstCutPoint, flatTolerance(c), options.faceGroups, &keep);
-    const std::set<int> crossing = crossingAfterRemoval(c, trial, options, triangulations);
+    const std::set<int> crossing = crossingOf(trial, sidesOfBentShrunkRegions(c, trial), options, triangulations);
     if (crossing.empty())
     {
       c = std::move(trial);
@@ -1419,6 +1453,9 @@ struct Cutting
   const double solveTolerance;
   const Index inputPoints; // the points before the first cut
   InterfaceTriangulationCache& triangulations; // the trials' interface triangulations, kept across cuts
+  const std::set<int>& keptPlanes; // parallel planes: the planes whose flat crossings stay (decomposeVolumeBalanced)
+  std::set<int> removedOnPlanes{}; // parallel planes: the planes whose removal after their cut took points out
+  std::vector<char> keptPoints{};  // per point: made by the cut of a kept plane (1), or not (0, or past the end)
   int nextCell = 1;
   std::vector<int> leaves{}; // cell ids in subdomain order
   std::string error{};
@@ -1485,8 +1522,25 @@ bool Cutting::cut(int cell, const Vec3& proposedNormal, double fraction, int par
     // found OCCT's Bottom at K = 16 by predicted cost with part 10 crossing
     // itself and cut the Bottom at K = 64 by volume at once instead of
     // again keeping the flat crossings, but made the planes' cuts 1.47 x
-    // slower on the corpus (cases over 1 s); not kept.
-    result.flatCrossingsRemoved += removeFlatCrossings(c, firstNewPoint, flatTolerance(c), options.faceGroups);
+    // slower on the corpus (cases over 1 s); not kept. Since session 49
+    // the subdomains these removals bent are checked once, after the last
+    // cut, and the planes beside one crossing itself are cut again keeping
+    // their points (planesOfCrossingSlabs, keptPlanes).
+    const int planeId = static_cast<int>(c.planes.size()) - 1;
+    if (keptPlanes.count(planeId))
+    {
+      keptPoints.resize(c.points.size(), 0);
+      std::fill(keptPoints.begin() + firstNewPoint, keptPoints.end(), 1);
+    }
+    else
+    {
+      const std::size_t count = removeFlatCrossings(c, firstNewPoint, flatTolerance(c), options.faceGroups);
+      result.flatCrossingsRemoved += count;
+      if (count > 0)
+      {
+        removedOnPlanes.insert(planeId);
+      }
+    }
   }
   return true;
 }
@@ -1728,9 +1782,45 @@ DecompositionResult decomposeVolumeBalanced(const TriangleSurface& input, const 
 namespace
 {
 
-// One decomposition with `options`; result.failedInCuts says whether it
-// failed in the cuts themselves (not on the options or the input).
-DecompositionResult decomposeOnce(PreparedSurface prepared, const DecompositionOptions& options)
+// Parallel planes take the flat crossings out after every cut (Cutting::cut)
+// unchecked, as checking the two parts of every cut made the planes' cuts
+// 1.47 x slower. So after the last cut the subdomains beside the bent
+// regions of the planes whose removals took points out are checked whole,
+// once. Returns the planes beside those that cross themselves, with an
+// error naming them in `result`; none if none does.
+std::set<int> planesOfCrossingSlabs(const Cutting& cutting, DecompositionResult& result)
+{
+  const SurfaceComplex& c = cutting.c;
+  const std::set<int> crossing =
+    crossingOf(c, sidesOfBentRegionsOn(c, cutting.removedOnPlanes), cutting.options, cutting.triangulations);
+  std::set<int> planes;
+  for (const InterfaceRegion& region : c.interfaces)
+  {
+    if (cutting.removedOnPlanes.count(region.planeId) &&
+      (crossing.count(region.pair[0]) || crossing.count(region.pair[1])))
+    {
+      planes.insert(region.planeId);
+    }
+  }
+  if (!crossing.empty())
+  {
+    std::ostringstream msg;
+    msg << "taking out the flat crossings after the cuts of " << planes.size() << " plane(s) (first: plane "
+        << *planes.begin() << ") made " << crossing.size() << " subdomain(s) cross themselves (first: "
+        << *crossing.begin() << ")";
+    result.error = msg.str();
+    result.failedInCuts = true;
+  }
+  return planes;
+}
+
+// One decomposition with `options`, keeping the flat crossings of the
+// parallel planes `keptPlanes`; result.failedInCuts says whether it failed
+// in the cuts themselves (not on the options or the input), and
+// `planesToKeep` the planes whose removal made a subdomain cross itself
+// (planesOfCrossingSlabs), if that is why.
+DecompositionResult decomposeOnce(PreparedSurface prepared, const DecompositionOptions& options,
+  const std::set<int>& keptPlanes, std::set<int>& planesToKeep)
 {
   DecompositionResult result;
   const int K = options.numberOfSubdomains;
@@ -1747,7 +1837,8 @@ DecompositionResult decomposeOnce(PreparedSurface prepared, const DecompositionO
   SurfaceComplex& c = result.complex;
   const Index inputPoints = static_cast<Index>(c.points.size());
   InterfaceTriangulationCache triangulations;
-  Cutting cutting{ c, options, result, std::min(1e-6, 0.01 * options.balanceTolerance), inputPoints, triangulations };
+  Cutting cutting{ c, options, result, std::min(1e-6, 0.01 * options.balanceTolerance), inputPoints, triangulations,
+    keptPlanes };
   if (cutsByCost(options))
   {
     const TriangleSurface whole{ c.points, c.triangles };
@@ -1780,11 +1871,16 @@ DecompositionResult decomposeOnce(PreparedSurface prepared, const DecompositionO
   renumberParts(c, cutting.leaves, cutting.nextCell, K);
   if (options.removeFlatCrossings && options.strategy == CutStrategy::ParallelPlanes)
   {
-    result.flatCrossingsRemoved += removeFlatCrossings(c, inputPoints, flatTolerance(c), options.faceGroups);
+    planesToKeep = planesOfCrossingSlabs(cutting, result);
+    if (!planesToKeep.empty())
+    {
+      return result;
+    }
   }
-  else if (options.removeFlatCrossings)
+  if (options.removeFlatCrossings)
   {
-    result.flatCrossingsRemoved += removeCheckedFlatCrossings(c, inputPoints, options, triangulations, result);
+    result.flatCrossingsRemoved +=
+      removeCheckedFlatCrossings(c, inputPoints, options, triangulations, cutting.keptPoints, result);
   }
   result.error = openInterfaceError(c);
   if (result.error.empty())
@@ -1809,15 +1905,55 @@ DecompositionResult decomposeOnce(PreparedSurface prepared, const DecompositionO
   result.ok = true;
   return result;
 }
+
+// Decomposes keeping the flat crossings of the parallel planes whose
+// removal made a subdomain cross itself (planesOfCrossingSlabs), adding
+// such planes for up to kRemovalRounds decompositions. On OCCT's Bottom
+// at K = 16 by predicted cost the removals after planes 0, 9 and 10 left
+// subdomain 10 crossing itself; a second decomposition keeping those
+// planes' flat crossings (1,234 of 1,236 still taken out) cut it whole,
+// the cut alone 16 s against 10.5 s unchecked (one process). Returns the
+// first failure if every round fails.
+DecompositionResult decomposeKeepingCrossingPlanes(const PreparedSurface& prepared, const DecompositionOptions& options)
+{
+  std::set<int> kept;
+  std::vector<std::string> why;
+  DecompositionResult first;
+  for (int round = 0; round < kRemovalRounds; ++round)
+  {
+    std::set<int> toKeep;
+    DecompositionResult result = decomposeOnce(prepared, options, kept, toKeep);
+    if (result.ok)
+    {
+      for (auto it = why.rbegin(); it != why.rend(); ++it)
+      {
+        result.warnings.insert(result.warnings.begin(), *it + "; cut again keeping those planes' flat crossings");
+      }
+      return result;
+    }
+    if (round == 0)
+    {
+      first = result;
+    }
+    if (!result.failedInCuts || toKeep.empty())
+    {
+      break;
+    }
+    why.push_back(result.error);
+    kept.insert(toKeep.begin(), toKeep.end());
+  }
+  return first;
+}
 } // namespace
 
 DecompositionResult decomposeVolumeBalanced(PreparedSurface prepared, const DecompositionOptions& options)
 {
+  std::set<int> none;
   if (!options.removeFlatCrossings)
   {
-    return decomposeOnce(std::move(prepared), options);
+    return decomposeOnce(std::move(prepared), options, {}, none);
   }
-  DecompositionResult first = decomposeOnce(prepared, options);
+  DecompositionResult first = decomposeKeepingCrossingPlanes(prepared, options);
   if (first.ok || !first.failedInCuts)
   {
     return first;
@@ -1830,7 +1966,7 @@ DecompositionResult decomposeVolumeBalanced(PreparedSurface prepared, const Deco
   // fails (session 32). Every rank runs the same cuts, so all retry alike.
   DecompositionOptions keeping = options;
   keeping.removeFlatCrossings = false;
-  DecompositionResult second = decomposeOnce(std::move(prepared), keeping);
+  DecompositionResult second = decomposeOnce(std::move(prepared), keeping, {}, none);
   if (!second.ok)
   {
     return first;
