@@ -1201,14 +1201,17 @@ TEST(VolumeBalancedDecomposition, AHairlinePokeUnderTheInterfaceMovesThePlane)
 
 namespace
 {
-// `surface` cut into 64 subdomains with the cutter's defaults (inertia
-// direction, volume balance, flat crossings taken out) by `strategy`.
-DecompositionResult cutBy64WithTheCuttersDefaults(const TriangleSurface& surface, CutStrategy strategy)
+// `surface` cut into K subdomains with the cutter's defaults (inertia
+// direction, flat crossings taken out) by `strategy`, balancing `criterion`
+// (the cutter's default: volume).
+DecompositionResult cutWithTheCuttersDefaults(const TriangleSurface& surface, CutStrategy strategy, int K,
+  BalanceCriterion criterion = BalanceCriterion::Volume)
 {
   DecompositionOptions options;
-  options.numberOfSubdomains = 64;
+  options.numberOfSubdomains = K;
   options.strategy = strategy;
   options.direction = CutDirection::Inertia;
+  options.criterion = criterion;
   return decomposeVolumeBalanced(surface, options);
 }
 } // namespace
@@ -1226,7 +1229,7 @@ TEST(VolumeBalancedDecomposition, EachPlaneTakesOutOnlyItsOwnFlatCrossings)
 {
   const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/occt_top.off");
   ASSERT_TRUE(file.ok) << file.error;
-  const DecompositionResult r = cutBy64WithTheCuttersDefaults(file.data.surface, CutStrategy::ParallelPlanes);
+  const DecompositionResult r = cutWithTheCuttersDefaults(file.data.surface, CutStrategy::ParallelPlanes, 64);
   ASSERT_TRUE(r.ok) << r.error;
   EXPECT_GT(r.flatCrossingsRemoved, 0u);
   for (const std::string& w : r.warnings)
@@ -1247,7 +1250,7 @@ TEST(VolumeBalancedDecomposition, TakingOutFlatCrossingsAfterBisectionKeepsSubdo
 {
   const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/occt_top.off");
   ASSERT_TRUE(file.ok) << file.error;
-  const DecompositionResult r = cutBy64WithTheCuttersDefaults(file.data.surface, CutStrategy::RecursiveBisection);
+  const DecompositionResult r = cutWithTheCuttersDefaults(file.data.surface, CutStrategy::RecursiveBisection, 64);
   ASSERT_TRUE(r.ok) << r.error;
   EXPECT_GT(r.flatCrossingsRemoved, 2000u); // 2,407 of the 2,477 an unchecked removal takes out
   expectSubdomainsAddUp(r, file.data.surface);
@@ -1268,12 +1271,7 @@ TEST(VolumeBalancedDecomposition, TakingOutFlatCrossingsAfterParallelPlanesKeeps
   ASSERT_TRUE(file.ok) << file.error;
   for (BalanceCriterion criterion : { BalanceCriterion::Volume, BalanceCriterion::PredictedCost })
   {
-    DecompositionOptions options;
-    options.numberOfSubdomains = 16;
-    options.strategy = CutStrategy::ParallelPlanes;
-    options.direction = CutDirection::Inertia;
-    options.criterion = criterion;
-    const DecompositionResult r = decomposeVolumeBalanced(file.data.surface, options);
+    const DecompositionResult r = cutWithTheCuttersDefaults(file.data.surface, CutStrategy::ParallelPlanes, 16, criterion);
     const std::string label = criterion == BalanceCriterion::Volume ? "by volume" : "by cost";
     ASSERT_TRUE(r.ok) << label << ": " << r.error;
     EXPECT_GT(r.flatCrossingsRemoved, 1000u) << label; // 1,293 and 1,234 of 1,297 and 1,236 unchecked
