@@ -1456,6 +1456,8 @@ struct Cutting
   const std::set<int>& keptPlanes; // parallel planes: the planes whose flat crossings stay (decomposeVolumeBalanced)
   std::set<int> removedOnPlanes{}; // parallel planes: the planes whose removal after their cut took points out
   std::vector<char> keptPoints{};  // per point: made by the cut of a kept plane (1), or not (0, or past the end)
+  std::set<int> planesToKeep{};    // parallel planes: the planes whose removal left a part crossing itself,
+                                   // found when a later plane could not cut as asked (removalsBlockedCut)
   int nextCell = 1;
   std::vector<int> leaves{}; // cell ids in subdomain order
   std::string error{};
@@ -1463,9 +1465,43 @@ struct Cutting
   CostSamples costSamples{}; // cutting by cost: the samples, following the cuts
 
   bool cut(int cell, const Vec3& proposedNormal, double fraction, int parts, int& below, int& above);
+  bool removalsBlockedCut(bool ran, const Vec3& proposedNormal);
   bool parallelPlanes(int K);
   bool bisect(int cell, int k);
 };
+
+// Parallel planes take the flat crossings out after every cut (Cutting::cut)
+// unchecked, as checking the two parts of every cut made the planes' cuts
+// 1.47 x slower. So after the last cut the subdomains beside the bent
+// regions of the planes whose removals took points out are checked whole,
+// once. Returns the planes beside those that cross themselves, with an
+// error naming them in `result`; none if none does. `label` names what the
+// complex's labels are: subdomains after the last cut, parts before.
+std::set<int> planesOfCrossingSlabs(const Cutting& cutting, DecompositionResult& result, const char* label)
+{
+  const SurfaceComplex& c = cutting.c;
+  const std::set<int> crossing =
+    crossingOf(c, sidesOfBentRegionsOn(c, cutting.removedOnPlanes), cutting.options, cutting.triangulations);
+  std::set<int> planes;
+  for (const InterfaceRegion& region : c.interfaces)
+  {
+    if (cutting.removedOnPlanes.count(region.planeId) &&
+      (crossing.count(region.pair[0]) || crossing.count(region.pair[1])))
+    {
+      planes.insert(region.planeId);
+    }
+  }
+  if (!crossing.empty())
+  {
+    std::ostringstream msg;
+    msg << "taking out the flat crossings after the cuts of " << planes.size() << " plane(s) (first: plane "
+        << *planes.begin() << ") made " << crossing.size() << " " << label << "(s) cross themselves (first: "
+        << *crossing.begin() << ")";
+    result.error = msg.str();
+    result.failedInCuts = true;
+  }
+  return planes;
+}
 
 // Cutting by cost: each part is cut by volume at the volume fraction that
 // splits its cost samples as wanted, with the balance tolerance (of cost)
@@ -1489,7 +1525,8 @@ bool Cutting::cut(int cell, const Vec3& proposedNormal, double fraction, int par
   }
   const Index firstNewPoint = static_cast<Index>(c.points.size());
   PartCut part(c, partOptions, result, cell, fraction, parts, below, above, solveTolerance, triangulations);
-  if (!part.run(proposedNormal, error))
+  const bool ran = part.run(proposedNormal, error);
+  if (removalsBlockedCut(ran, proposedNormal) || !ran)
   {
     return false;
   }
@@ -1645,6 +1682,40 @@ bool checkSlabThickness(const SurfaceComplex& c, const Vec3& normal, const Decom
 }
 /// @}
 
+// A parallel plane that could not cut as asked (it failed, or its cut
+// turned off the planes' normal: soundCutInstead's other normals) may have
+// been blocked by a part an earlier plane's removal of flat crossings left
+// crossing itself, which the cut's checks count against every try. On
+// OCCT's Bottom at K = 64 by volume, plane 13's removal left part 27
+// crossing itself; every try of plane 14 at the planes' normal was refused
+// for it, planes 14 to 17 were cut along x, no try of plane 18 was sound,
+// and the whole decomposition was cut again keeping every flat crossing
+// (still crossing itself). So the parts beside bent regions of planes with
+// removals are checked whole then (planesOfCrossingSlabs, only on such a
+// cut), and if one crosses itself the cut fails naming those planes, which
+// decomposeKeepingCrossingPlanes keeps in its next round.
+bool Cutting::removalsBlockedCut(bool ran, const Vec3& proposedNormal)
+{
+  if (options.strategy != CutStrategy::ParallelPlanes || !options.removeFlatCrossings || removedOnPlanes.empty())
+  {
+    return false;
+  }
+  if (ran && dot(c.planes.back().normal, proposedNormal) > 1.0 - 1e-12)
+  {
+    return false;
+  }
+  const std::string cutError = ran ? "" : error;
+  planesToKeep = planesOfCrossingSlabs(*this, result, "part");
+  if (planesToKeep.empty())
+  {
+    return false;
+  }
+  error = "plane " + std::to_string(static_cast<int>(c.planes.size()) - (ran ? 1 : 0)) +
+    " could not cut at the parallel planes' normal" + (cutError.empty() ? "" : " (" + cutError + ")") + ": " +
+    result.error;
+  return true;
+}
+
 // One direction for all planes; each plane cuts the rest of the object so
 // that the slab below gets 1/(number of subdomains still to make) of it.
 bool Cutting::parallelPlanes(int K)
@@ -1782,38 +1853,6 @@ DecompositionResult decomposeVolumeBalanced(const TriangleSurface& input, const 
 namespace
 {
 
-// Parallel planes take the flat crossings out after every cut (Cutting::cut)
-// unchecked, as checking the two parts of every cut made the planes' cuts
-// 1.47 x slower. So after the last cut the subdomains beside the bent
-// regions of the planes whose removals took points out are checked whole,
-// once. Returns the planes beside those that cross themselves, with an
-// error naming them in `result`; none if none does.
-std::set<int> planesOfCrossingSlabs(const Cutting& cutting, DecompositionResult& result)
-{
-  const SurfaceComplex& c = cutting.c;
-  const std::set<int> crossing =
-    crossingOf(c, sidesOfBentRegionsOn(c, cutting.removedOnPlanes), cutting.options, cutting.triangulations);
-  std::set<int> planes;
-  for (const InterfaceRegion& region : c.interfaces)
-  {
-    if (cutting.removedOnPlanes.count(region.planeId) &&
-      (crossing.count(region.pair[0]) || crossing.count(region.pair[1])))
-    {
-      planes.insert(region.planeId);
-    }
-  }
-  if (!crossing.empty())
-  {
-    std::ostringstream msg;
-    msg << "taking out the flat crossings after the cuts of " << planes.size() << " plane(s) (first: plane "
-        << *planes.begin() << ") made " << crossing.size() << " subdomain(s) cross themselves (first: "
-        << *crossing.begin() << ")";
-    result.error = msg.str();
-    result.failedInCuts = true;
-  }
-  return planes;
-}
-
 // One decomposition with `options`, keeping the flat crossings of the
 // parallel planes `keptPlanes`; result.failedInCuts says whether it failed
 // in the cuts themselves (not on the options or the input), and
@@ -1852,6 +1891,7 @@ DecompositionResult decomposeOnce(PreparedSurface prepared, const DecompositionO
     {
       result.error = cutting.error;
       result.failedInCuts = !result.refusedBeforeCutting;
+      planesToKeep = cutting.planesToKeep;
       return result;
     }
   }
@@ -1871,7 +1911,7 @@ DecompositionResult decomposeOnce(PreparedSurface prepared, const DecompositionO
   renumberParts(c, cutting.leaves, cutting.nextCell, K);
   if (options.removeFlatCrossings && options.strategy == CutStrategy::ParallelPlanes)
   {
-    planesToKeep = planesOfCrossingSlabs(cutting, result);
+    planesToKeep = planesOfCrossingSlabs(cutting, result, "subdomain");
     if (!planesToKeep.empty())
     {
       return result;
