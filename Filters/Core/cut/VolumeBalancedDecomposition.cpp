@@ -1474,7 +1474,8 @@ struct Cutting
 // unchecked, as checking the two parts of every cut made the planes' cuts
 // 1.47 x slower. So after the last cut the subdomains beside the bent
 // regions of the planes whose removals took points out are checked whole,
-// once. Returns the planes beside those that cross themselves, with an
+// once (and on the parts so far where a plane could not cut as asked,
+// Cutting::removalsBlockedCut). Returns the planes beside those that cross themselves, with an
 // error naming them in `result`; none if none does. `label` names what the
 // complex's labels are: subdomains after the last cut, parts before.
 std::set<int> planesOfCrossingSlabs(const Cutting& cutting, DecompositionResult& result, const char* label)
