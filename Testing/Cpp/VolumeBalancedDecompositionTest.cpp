@@ -1283,3 +1283,29 @@ TEST(VolumeBalancedDecomposition, TakingOutFlatCrossingsAfterParallelPlanesKeeps
     EXPECT_EQ(crossingSubdomains(r), 0) << label;
   }
 }
+
+// CGAL's oblong blob at K = 16 by parallel planes and predicted cost: plane
+// 1's cut of the rest crossed itself at the planes' normal beside plane 0,
+// whose flat crossings were taken out, with no part crossing itself to
+// name; plane 1 was cut along another normal, unsaid. Now the next round
+// keeps plane 0's flat crossings and every plane is parallel.
+TEST(VolumeBalancedDecomposition, APlaneTurnedBesideARemovalKeepsThePreviousPlanesFlatCrossings)
+{
+  const OffReadResult file = readOffFile(PTM_DATA_DIR "/regression/cgal_oblong.off");
+  ASSERT_TRUE(file.ok) << file.error;
+  const DecompositionResult r =
+    cutWithTheCuttersDefaults(file.data.surface, CutStrategy::ParallelPlanes, 16, BalanceCriterion::PredictedCost);
+  ASSERT_TRUE(r.ok) << r.error;
+  ASSERT_EQ(r.complex.planes.size(), 15u);
+  for (const CuttingPlane& plane : r.complex.planes)
+  {
+    EXPECT_GT(std::fabs(dot(plane.normal, r.complex.planes[0].normal)), 1.0 - 1e-12);
+  }
+  for (const std::string& w : r.warnings)
+  {
+    EXPECT_EQ(w.find("not parallel"), std::string::npos) << w;
+  }
+  EXPECT_GT(r.flatCrossingsRemoved, 700u); // 819
+  expectSubdomainsAddUp(r, file.data.surface);
+  EXPECT_EQ(crossingSubdomains(r), 0);
+}
