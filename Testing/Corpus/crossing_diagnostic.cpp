@@ -40,6 +40,6 @@ int main(int argc, char** argv)
   for (int s = 0; s < c.subdomainCount; ++s)
     if (checkSelfIntersection(TriangleSurface{ c.points, subdomainTriangles(c, s) }).intersects) { ++bad; if (first < 0) first = s; }
   std::cout << (bad ? "CROSS " : "OK ") << sec << " removed=" << d.flatCrossingsRemoved << " bad=" << bad << " first=" << first;
-  for (auto& w : d.warnings) if (w.find("cut again") != std::string::npos || w.find("kept") != std::string::npos) std::cout << " [" << w.substr(0, 400) << "]";
+  for (auto& w : d.warnings) if (w.find("cut again") != std::string::npos || w.find("kept") != std::string::npos || w.find("not parallel") != std::string::npos) std::cout << " [" << w.substr(0, 400) << "]";
   std::cout << "\n";
 }
