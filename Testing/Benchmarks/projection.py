@@ -20,6 +20,7 @@ bandwidth shared by ranks on one node (two TetGen processes side by side on
 this 2-core machine give about 1.4x the throughput of one, README "Measured").
 """
 import json
+import math
 import os
 import subprocess
 import time
@@ -29,20 +30,20 @@ import peers
 
 def assign_subdomains_to_ranks(measures, ranks):
     """ptm::assignSubdomainsToRanks: K <= P gives subdomain s to rank s; with
-    over-decomposition contiguous blocks of about equal measure, subdomain s
-    going to the rank in whose share of the cumulative measure its middle falls."""
+    over-decomposition longest first, each subdomain in order of decreasing
+    measure (ties by number) going to the rank with the least so far (the
+    lowest of equal ones)."""
     K = len(measures)
     if ranks <= 1:
         return [0] * K
     if K <= ranks:
         return list(range(K))
-    total = sum(measures)
-    owner, before = [], 0.0
-    for s, m in enumerate(measures):
-        middle = before + 0.5 * m
-        before += m
-        r = int(ranks * middle / total) if total > 0 else s * ranks // K
-        owner.append(min(max(r, 0), ranks - 1))
+    cost = [m if math.isfinite(m) and m > 0 else 0.0 for m in measures]
+    owner, load = [0] * K, [0.0] * ranks
+    for s in sorted(range(K), key=lambda s: -cost[s]):  # sorted is stable: ties by number
+        r = load.index(min(load))
+        owner[s] = r
+        load[r] += cost[s]
     return owner
 
 

@@ -609,9 +609,13 @@ TEST(SubdomainAssignment, OneEachOrBalancedByMeasure)
   }
   EXPECT_DOUBLE_EQ(load[0], 9);
   EXPECT_DOUBLE_EQ(load[1], 9);
-  // contiguous blocks: neighbours in numbering share a rank
+  // longest first: the two largest go to different ranks, wherever they
+  // stand in the numbering (contiguous blocks put both on rank 1)
+  const std::vector<int> large = assignSubdomainsToRanks({ 1, 1, 1, 1, 1, 1, 8, 8 }, 2);
+  EXPECT_NE(large[6], large[7]);
+  // equal measures: deterministic, by subdomain number, alternating
   EXPECT_EQ(assignSubdomainsToRanks({ 1, 1, 1, 1, 1, 1, 1, 1 }, 2),
-    (std::vector<int>{ 0, 0, 0, 0, 1, 1, 1, 1 }));
+    (std::vector<int>{ 0, 1, 0, 1, 0, 1, 0, 1 }));
   // every rank within one subdomain of the mean
   const std::vector<double> seven{ 1.0, 1.01, 0.99, 1.0, 1.0, 1.005, 0.995 };
   const std::vector<int> three = assignSubdomainsToRanks(seven, 3);

@@ -1,6 +1,7 @@
 #include "SubdomainAssignment.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace ptm
@@ -18,14 +19,20 @@ std::vector<int> assignSubdomainsToRanks(const std::vector<double>& measures, in
     std::iota(owner.begin(), owner.end(), 0);
     return owner;
   }
-  const double total = std::accumulate(measures.begin(), measures.end(), 0.0);
-  double before = 0;
-  for (int s = 0; s < K; ++s)
+  std::vector<double> cost(measures); // one that is not a positive number weighs nothing (and sorts last)
+  for (double& c : cost)
   {
-    const double middle = before + 0.5 * measures[s];
-    before += measures[s];
-    const int r = total > 0 ? static_cast<int>(ranks * middle / total) : s * ranks / K;
-    owner[s] = std::min(std::max(r, 0), ranks - 1);
+    c = std::isfinite(c) ? std::max(c, 0.0) : 0.0;
+  }
+  std::vector<int> order(K);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return cost[a] > cost[b]; });
+  std::vector<double> load(ranks, 0.0);
+  for (int s : order)
+  {
+    const int r = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
+    owner[s] = r;
+    load[r] += cost[s];
   }
   return owner;
 }
